@@ -1,0 +1,31 @@
+// 8-bit RGBA images and PNG encoding. The top row comes first.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadelab {
+
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgba;  ///< width * height * 4 bytes, top row first
+
+  std::uint8_t* pixel(int x, int y) { return &rgba[(std::size_t(y) * width + x) * 4]; }
+  const std::uint8_t* pixel(int x, int y) const {
+    return &rgba[(std::size_t(y) * width + x) * 4];
+  }
+};
+
+/// PNG bytes of `image` (RGBA, 8 bits per channel).
+std::vector<std::uint8_t> encode_png(const Image& image);
+
+/// Writes `image` as PNG to `path` atomically (a temporary file beside it, then a rename), so a
+/// failed write never leaves a partial file. Returns false and sets `error` on failure.
+bool write_png(const Image& image, const std::string& path, std::string* error);
+
+/// Reads a PNG or JPEG file as RGBA. Returns false and sets `error` on failure.
+bool read_image(const std::string& path, Image& out, std::string* error);
+
+}  // namespace shadelab

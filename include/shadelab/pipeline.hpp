@@ -1,0 +1,124 @@
+// The drawing pipeline shared by both front ends (scene files and the GL library):
+// eye-space vertices in, pixels in a framebuffer out. Vertex lighting, clipping, triangle
+// setup, rasterization, per-pixel shading and blending happen here. It keeps no state
+// between calls besides the framebuffer it is given.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "shadelab/image.hpp"
+#include "shadelab/light.hpp"
+#include "shadelab/material.hpp"
+#include "shadelab/mesh.hpp"
+#include "shadelab/scene.hpp"
+#include "shadelab/texture.hpp"
+
+namespace shadelab {
+
+/// Colour, depth and stencil in OpenGL window space: row 0 is the BOTTOM row.
+struct Framebuffer {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> color;  ///< RGBA8, width * height * 4
+  std::vector<float> depth;         ///< window-space depth in [0, 1]
+  std::vector<std::uint8_t> stencil;
+
+  void resize(int w, int h);
+  void clear_color(glm::vec4 rgba);
+  void clear_depth(float d);
+  void clear_stencil(std::uint8_t s);
+  /// The colour buffer as an image, top row first.
+  Image to_image() const;
+};
+
+/// glViewport / glDepthRange.
+struct Viewport {
+  int x = 0, y = 0, width = 0, height = 0;
+  float near_depth = 0.0f, far_depth = 1.0f;
+};
+
+enum class CompareFunc { kNever, kLess, kEqual, kLequal, kGreater, kNotequal, kGequal, kAlways };
+enum class StencilOp { kKeep, kZero, kReplace, kIncr, kDecr, kInvert };
+
+/// glStencilFunc / glStencilOp / glStencilMask.
+struct StencilState {
+  bool enabled = false;
+  CompareFunc func = CompareFunc::kAlways;
+  std::uint8_t ref = 0, value_mask = 0xff, write_mask = 0xff;
+  StencilOp fail = StencilOp::kKeep, depth_fail = StencilOp::kKeep, pass = StencilOp::kKeep;
+};
+
+/// Per-fragment state for one draw.
+struct FragmentState {
+  CullMode cull = CullMode::kNone;
+  bool front_ccw = true;  ///< glFrontFace(GL_CCW): counter-clockwise in window space is front
+  bool depth_test = true;
+  CompareFunc depth_func = CompareFunc::kLess;
+  bool depth_write = true;
+  BlendState blend;
+  bool color_mask[4] = {true, true, true, true};
+  StencilState stencil;
+  bool polygon_offset = false;  ///< glPolygonOffset for filled polygons
+  float offset_factor = 0.0f, offset_units = 0.0f;
+};
+
+/// How colours are made. With `lighting` the pipeline lights vertices or pixels (by `shading`)
+/// with the one lighting function; without it, vertex colours are used as given.
+struct ShadeState {
+  bool lighting = true;
+  ShadingMode shading = ShadingMode::kGouraud;
+  LightModel model;
+  std::span<const Light> lights;  ///< eye space
+  Material front;
+  Material back;  ///< used for back faces when model.two_side
+  /// Texturing: when set (and complete), fragments are textured with `texture_env`, before the
+  /// secondary colour is added. Needs texcoords in the vertex input.
+  const Texture* texture = nullptr;
+  TextureEnvMode texture_env = TextureEnvMode::kModulate;
+};
+
+/// Vertices in eye space and the triangles over them.
+/// - `normals` (unit, eye space) are needed when lighting.
+/// - `colors`: per-vertex colours used when lighting is off (empty: `constant_color`).
+/// - `back_colors` / `secondary_colors`: optional pre-lit colours for back faces and the
+///   separate specular colour, for front ends that light vertices themselves (the GL library).
+struct VertexInput {
+  std::span<const glm::vec4> positions;
+  std::span<const glm::vec3> normals;
+  std::span<const glm::vec4> colors;
+  std::span<const glm::vec4> back_colors;
+  std::span<const glm::vec3> secondary_colors;
+  std::span<const glm::vec3> back_secondary_colors;
+  std::span<const glm::vec2> texcoords;  ///< (s, t) per vertex, for texturing
+  glm::vec4 constant_color{1.0f};
+  std::span<const Triangle> triangles;  ///< last index of each is the provoking vertex
+};
+
+/// Counters and timings for `shadelab render --stats`.
+struct RenderStats {
+  std::uint64_t triangles_in = 0;       ///< triangles submitted
+  std::uint64_t triangles_culled = 0;   ///< back-face culled or degenerate
+  std::uint64_t triangles_clipped = 0;  ///< crossing a clip plane (then split)
+  std::uint64_t triangles_rasterized = 0;
+  std::uint64_t vertices_lit = 0;
+  std::uint64_t fragments = 0;        ///< covered samples that reached the depth test
+  std::uint64_t pixels_shaded = 0;    ///< fragments that passed depth and were written
+  double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
+};
+
+/// Draws triangles into `fb`: vertex lighting (flat/Gouraud), projection, homogeneous clipping
+/// against the view volume, viewport mapping, rasterization with the top-left fill rule at
+/// pixel centres, depth/stencil tests, per-pixel lighting (Phong), blending. `projection` maps
+/// eye space to clip space.
+void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
+                    const FragmentState& fragment, const ShadeState& shade,
+                    const VertexInput& vertices, RenderStats* stats = nullptr);
+
+}  // namespace shadelab

@@ -1,0 +1,87 @@
+// A validated scene: what the renderer draws. Built by the scene reader (scene_io.hpp) or by
+// code; holds no file positions and no unvalidated values. World space unless stated.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "shadelab/light.hpp"
+#include "shadelab/material.hpp"
+#include "shadelab/mesh.hpp"
+
+namespace shadelab {
+
+/// How colour is spread over a polygon (SPEC section 4).
+enum class ShadingMode {
+  kFlat,     ///< lit once per triangle, at its provoking (last) vertex
+  kGouraud,  ///< lit per vertex, colours interpolated
+  kPhong,    ///< normal and position interpolated, lit per pixel
+};
+
+enum class CullMode { kNone, kBack, kFront };
+
+/// OpenGL 1.1 blend factors (glBlendFunc).
+enum class BlendFactor {
+  kZero, kOne, kSrcColor, kOneMinusSrcColor, kDstColor, kOneMinusDstColor,
+  kSrcAlpha, kOneMinusSrcAlpha, kDstAlpha, kOneMinusDstAlpha, kSrcAlphaSaturate,
+};
+
+/// result = src * src_factor + dst * dst_factor, when enabled.
+struct BlendState {
+  bool enabled = false;
+  BlendFactor src = BlendFactor::kSrcAlpha;
+  BlendFactor dst = BlendFactor::kOneMinusSrcAlpha;
+};
+
+/// Look-at camera. Angles in degrees; distances in world units.
+struct Camera {
+  enum class Projection { kPerspective, kOrthographic };
+  glm::vec3 eye{0.0f, 0.0f, 8.0f};
+  glm::vec3 target{0.0f, 0.0f, 0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  Projection projection = Projection::kPerspective;
+  float fovy_degrees = 30.0f;  ///< vertical field of view (perspective)
+  float ortho_height = 4.0f;   ///< height of the view volume (orthographic)
+  float near_plane = 0.1f;
+  float far_plane = 100.0f;
+
+  glm::mat4 view_matrix() const;
+  glm::mat4 projection_matrix(float aspect) const;  ///< aspect = width / height
+};
+
+/// A light with the space its position and spot direction are given in.
+struct SceneLight {
+  Light light;
+  bool eye_space = false;  ///< false: world space (moved by the camera), true: eye space
+};
+
+struct SceneObject {
+  std::string name;
+  std::shared_ptr<const Mesh> mesh;
+  glm::mat4 model{1.0f};  ///< object to world
+  Material front;
+  std::optional<Material> back;  ///< used by two-sided lighting; front material if absent
+  ShadingMode shading = ShadingMode::kGouraud;
+  CullMode cull = CullMode::kNone;  ///< OpenGL's default: no culling
+  BlendState blend;                 ///< enabled => drawn after opaque objects, back to front
+  bool lighting = true;             ///< false: vertex colours, else `color`, unlit
+  glm::vec4 color{1.0f};            ///< colour when lighting is off and the mesh has none
+};
+
+struct Scene {
+  int width = 640;
+  int height = 480;
+  glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
+  Camera camera;
+  LightModel light_model;
+  std::vector<SceneLight> lights;
+  std::vector<SceneObject> objects;
+};
+
+}  // namespace shadelab

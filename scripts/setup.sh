@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Takes a fresh Debian 12 machine to a built shadelab: installs the Debian packages the project
+# needs (only those missing), builds everything, and renders the example scenes into out/.
+#   scripts/setup.sh            install, build, render
+#   scripts/setup.sh --deps     install packages only
+#   scripts/setup.sh --build    install and build, render nothing
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+PACKAGES=(
+  build-essential cmake ninja-build pkg-config
+  libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
+  libgtest-dev libgmock-dev
+  libosmesa6-dev
+)
+
+install_packages() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    local sudo=""
+    [ "$(id -u)" -eq 0 ] || sudo="sudo"
+    echo "setup: installing ${missing[*]}"
+    $sudo apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+}
+
+build() {
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  cmake --build build
+}
+
+render_examples() {
+  mkdir -p out
+  ./build/shadelab render scenes/teapot.json -o out/teapot.png
+  echo "setup: rendered out/teapot.png (the lecture's shiny red teapot)"
+}
+
+case "${1:-all}" in
+  --deps) install_packages ;;
+  --build) install_packages; build ;;
+  all) install_packages; build; render_examples ;;
+  *) echo "usage: scripts/setup.sh [--deps|--build]" >&2; exit 2 ;;
+esac

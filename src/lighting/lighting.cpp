@@ -1,0 +1,147 @@
+// The OpenGL 1.x lighting equation (GL 1.5 spec, section 2.14.1), once, for every shading
+// mode. light_point and explain_point share one implementation; explain_point records terms.
+#include "shadelab/lighting.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace shadelab {
+
+namespace {
+
+glm::vec3 rgb(const glm::vec4& v) { return glm::vec3(v); }
+
+// Spot factor (GL 1.5 eq. 2.5): 1 without a cone; (-L . D)^exponent inside it; 0 outside.
+// `to_light` is the unit vector from the point to the light.
+float spot_factor(const Light& light, const glm::vec3& to_light) {
+  if (light.spot_cutoff == 180.0f) return 1.0f;
+  glm::vec3 d = light.spot_direction;
+  float len = glm::length(d);
+  if (!(len > 0.0f)) return 0.0f;
+  float c = glm::dot(-to_light, d / len);
+  float cos_cutoff = std::cos(glm::radians(light.spot_cutoff));
+  if (c < cos_cutoff) return 0.0f;
+  // pow(0, 0) is 1 in C, as the GL equation wants for exponent 0 at the cone's centre line.
+  return std::pow(std::max(c, 0.0f), light.spot_exponent);
+}
+
+// Oren-Nayar's qualitative model: the Lambert cosine scaled by A + B max(0, cos(phi_i - phi_r))
+// sin(alpha) tan(beta). At roughness 0, A = 1 and B = 0: exactly Lambert.
+float oren_nayar(float sigma, const glm::vec3& n, const glm::vec3& l, const glm::vec3& v,
+                 float n_dot_l) {
+  float s2 = sigma * sigma;
+  float a = 1.0f - 0.5f * s2 / (s2 + 0.33f);
+  float b = 0.45f * s2 / (s2 + 0.09f);
+  if (b == 0.0f) return n_dot_l * a;
+  float n_dot_v = std::clamp(glm::dot(n, v), -1.0f, 1.0f);
+  float theta_i = std::acos(std::clamp(n_dot_l, -1.0f, 1.0f));
+  float theta_r = std::acos(n_dot_v);
+  // cos(phi_i - phi_r): the angle between l and v projected onto the tangent plane.
+  glm::vec3 lp = l - n * n_dot_l, vp = v - n * n_dot_v;
+  float lp_len = glm::length(lp), vp_len = glm::length(vp);
+  float cos_phi = (lp_len > 0.0f && vp_len > 0.0f) ? glm::dot(lp, vp) / (lp_len * vp_len) : 0.0f;
+  float alpha = std::max(theta_i, theta_r), beta = std::min(theta_i, theta_r);
+  return n_dot_l * (a + b * std::max(0.0f, cos_phi) * std::sin(alpha) * std::tan(beta));
+}
+
+// The specular cosine raised to the shininess; f_i (n . L > 0) is checked by the caller.
+float specular_factor(const Material& m, const glm::vec3& n, const glm::vec3& l,
+                      const glm::vec3& v) {
+  float c;
+  if (m.specular_model == SpecularModel::kPhong) {
+    glm::vec3 r = 2.0f * glm::dot(n, l) * n - l;  // mirror of L about n
+    c = glm::dot(r, v);
+  } else {
+    glm::vec3 h = l + v;
+    float len = glm::length(h);
+    c = len > 0.0f ? glm::dot(n, h / len) : 0.0f;
+  }
+  return c > 0.0f ? std::pow(c, m.shininess) : 0.0f;
+}
+
+// One light's term, with attenuation and spot applied (GL 1.5 eq. 2.4, inside the sum).
+LightTerm light_term(int index, const Light& light, const Material& m, const glm::vec3& p,
+                     const glm::vec3& n, const glm::vec3& v) {
+  LightTerm t;
+  t.light = index;
+  glm::vec3 to_light;
+  if (light.position.w != 0.0f) {
+    glm::vec3 delta = glm::vec3(light.position) / light.position.w - p;
+    float d = glm::length(delta);
+    to_light = d > 0.0f ? delta / d : glm::vec3(0.0f);
+    float denom = light.constant_attenuation + light.linear_attenuation * d +
+                  light.quadratic_attenuation * d * d;
+    t.attenuation = denom > 0.0f ? 1.0f / denom : 0.0f;
+  } else {
+    glm::vec3 dir = glm::vec3(light.position);
+    float len = glm::length(dir);
+    to_light = len > 0.0f ? dir / len : glm::vec3(0.0f);
+  }
+  t.spot = spot_factor(light, to_light);
+  float scale = t.attenuation * t.spot;
+  t.n_dot_l = glm::dot(n, to_light);
+  t.ambient = scale * rgb(m.ambient) * rgb(light.ambient);
+  if (t.n_dot_l > 0.0f) {
+    float diffuse = m.diffuse_model == DiffuseModel::kOrenNayar
+                        ? oren_nayar(m.roughness, n, to_light, v, t.n_dot_l)
+                        : t.n_dot_l;
+    t.diffuse = scale * diffuse * rgb(m.diffuse) * rgb(light.diffuse);
+    t.specular = scale * specular_factor(m, n, to_light, v) * rgb(m.specular) *
+                 rgb(light.specular);
+  }
+  return t;
+}
+
+glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
+
+// The whole equation. `terms`, when given, receives each enabled light's term.
+LitColor evaluate(const LightModel& model, std::span<const Light> lights, const Material& m,
+                  const LightingInput& in, LightingBreakdown* breakdown) {
+  glm::vec3 v = model.local_viewer ? -in.position : glm::vec3(0.0f, 0.0f, 1.0f);
+  float v_len = glm::length(v);
+  v = v_len > 0.0f ? v / v_len : glm::vec3(0.0f, 0.0f, 1.0f);
+  glm::vec3 emission = rgb(m.emission);
+  glm::vec3 global_ambient = rgb(m.ambient) * rgb(model.ambient);
+  glm::vec3 primary = emission + global_ambient, specular(0.0f);
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    if (!lights[i].enabled) continue;
+    LightTerm t = light_term(static_cast<int>(i), lights[i], m, in.position, in.normal, v);
+    primary += t.ambient + t.diffuse;
+    specular += t.specular;
+    if (breakdown) breakdown->lights.push_back(t);
+  }
+  LitColor out;
+  float alpha = std::clamp(m.diffuse.a, 0.0f, 1.0f);
+  if (model.separate_specular) {
+    out.primary = glm::vec4(clamp01(primary), alpha);
+    out.secondary = clamp01(specular);
+  } else {
+    out.primary = glm::vec4(clamp01(primary + specular), alpha);
+  }
+  if (breakdown) {
+    breakdown->emission = emission;
+    breakdown->global_ambient = global_ambient;
+    breakdown->unclamped = primary + specular;
+    breakdown->result = out;
+  }
+  return out;
+}
+
+}  // namespace
+
+LitColor light_point(const LightModel& model, std::span<const Light> lights,
+                     const Material& material, const LightingInput& in) {
+  return evaluate(model, lights, material, in, nullptr);
+}
+
+LightingBreakdown explain_point(const LightModel& model, std::span<const Light> lights,
+                                const Material& material, const LightingInput& in) {
+  LightingBreakdown b;
+  evaluate(model, lights, material, in, &b);
+  return b;
+}
+
+}  // namespace shadelab

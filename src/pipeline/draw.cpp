@@ -1,0 +1,226 @@
+// draw_triangles: the vertex stage (transform, per-vertex lighting), clipping, facing and
+// culling, then the reference rasterizer with per-pixel shading and fragment operations.
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "pipeline/fragment_ops.hpp"
+#include "pipeline/stages.hpp"
+#include "shadelab/lighting.hpp"
+
+namespace shadelab {
+
+using namespace detail;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+void put(Attribs& a, int slot, const glm::vec4& v) {
+  for (int i = 0; i < 4; ++i) a[slot + i] = v[i];
+}
+void put(Attribs& a, int slot, const glm::vec3& v) {
+  for (int i = 0; i < 3; ++i) a[slot + i] = v[i];
+}
+glm::vec4 get4(const Attribs& a, int slot) {
+  return {a[slot], a[slot + 1], a[slot + 2], a[slot + 3]};
+}
+glm::vec3 get3(const Attribs& a, int slot) { return {a[slot], a[slot + 1], a[slot + 2]}; }
+
+// Colours of one vertex: lit (flat and Gouraud) or given (lighting off). Back slots hold the
+// back-face colours, equal to the front ones when there are none.
+void vertex_colors(const ShadeState& shade, const VertexInput& in, std::size_t i,
+                   Attribs& a, RenderStats& stats) {
+  glm::vec3 pos(in.positions[i]);
+  glm::vec3 n = in.normals.empty() ? glm::vec3(0, 0, 1) : in.normals[i];
+  if (shade.lighting && shade.shading != ShadingMode::kPhong) {
+    LitColor f = light_point(shade.model, shade.lights, shade.front, {pos, n});
+    LitColor b = shade.model.two_side ? light_point(shade.model, shade.lights, shade.back, {pos, -n}) : f;
+    put(a, kFrontColor, f.primary);
+    put(a, kFrontSecondary, f.secondary);
+    put(a, kBackColor, b.primary);
+    put(a, kBackSecondary, b.secondary);
+    stats.vertices_lit += shade.model.two_side ? 2 : 1;
+    return;
+  }
+  glm::vec4 c = in.colors.empty() ? in.constant_color : in.colors[i];
+  put(a, kFrontColor, c);
+  put(a, kBackColor, in.back_colors.empty() ? c : in.back_colors[i]);
+  glm::vec3 s = in.secondary_colors.empty() ? glm::vec3(0.0f) : in.secondary_colors[i];
+  put(a, kFrontSecondary, s);
+  put(a, kBackSecondary, in.back_secondary_colors.empty() ? s : in.back_secondary_colors[i]);
+}
+
+std::vector<ClipVertex> vertex_stage(const glm::mat4& projection, const ShadeState& shade,
+                                     const VertexInput& in, RenderStats& stats) {
+  std::vector<ClipVertex> out(in.positions.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    ClipVertex& v = out[i];
+    v.attr.fill(0.0f);
+    v.clip = projection * in.positions[i];
+    vertex_colors(shade, in, i, v.attr, stats);
+    // Eye-space position for lighting is the dehomogenized point (GL uses x/w, y/w, z/w).
+    glm::vec4 p = in.positions[i];
+    put(v.attr, kEyePosition, p.w != 0.0f ? glm::vec3(p) / p.w : glm::vec3(p));
+    if (!in.normals.empty()) put(v.attr, kEyeNormal, in.normals[i]);
+    if (!in.texcoords.empty()) {
+      v.attr[kTexCoord] = in.texcoords[i].x;
+      v.attr[kTexCoord + 1] = in.texcoords[i].y;
+    }
+  }
+  return out;
+}
+
+WindowVertex to_window(const ClipVertex& v, const Viewport& vp) {
+  float inv_w = 1.0f / v.clip.w;
+  double nx = double(v.clip.x) * inv_w, ny = double(v.clip.y) * inv_w;
+  float nz = v.clip.z * inv_w;
+  WindowVertex w;
+  w.x = (nx + 1.0) * 0.5 * vp.width + vp.x;
+  w.y = (ny + 1.0) * 0.5 * vp.height + vp.y;
+  w.z = nz * 0.5f * (vp.far_depth - vp.near_depth) + 0.5f * (vp.far_depth + vp.near_depth);
+  w.inv_w = inv_w;
+  w.attr = &v.attr;
+  return w;
+}
+
+// Twice the signed window-space area of a polygon (positive: counter-clockwise).
+double signed_area(const std::vector<WindowVertex>& w) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const WindowVertex& p = w[i];
+    const WindowVertex& q = w[(i + 1) % w.size()];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return a;
+}
+
+// glPolygonOffset: factor * max depth slope + units * r, r the smallest resolvable depth step
+// of a 24-bit depth buffer (GL 1.5 section 3.5.5).
+float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                     const FragmentState& f) {
+  double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  double m = 0.0;
+  if (det != 0.0) {
+    double dzdx = ((b.z - a.z) * (c.y - a.y) - (c.z - a.z) * (b.y - a.y)) / det;
+    double dzdy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / det;
+    m = std::max(std::abs(dzdx), std::abs(dzdy));
+  }
+  return static_cast<float>(f.offset_factor * m + f.offset_units * (1.0 / 16777216.0));
+}
+
+// GL 1.1 section 3.8.5: lambda = log2 of the larger screen-space footprint in texels.
+float texture_lambda(const Texture& t, const Fragment& f) {
+  float w = float(t.levels[0].width), h = float(t.levels[0].height);
+  float rx = std::hypot(f.ds_dx * w, f.dt_dx * h), ry = std::hypot(f.ds_dy * w, f.dt_dy * h);
+  float rho = std::max(rx, ry);
+  return rho > 0.0f ? std::log2(rho) : -1000.0f;
+}
+
+// The colour of one fragment, lit per pixel for Phong, else interpolated or flat; then
+// textured, then the secondary colour added.
+glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front) {
+  const Attribs& a = f.attr;
+  LitColor lit;
+  if (shade.lighting && shade.shading == ShadingMode::kPhong) {
+    glm::vec3 n = get3(a, kEyeNormal);
+    float len = glm::length(n);
+    n = len > 0.0f ? n / len : glm::vec3(0, 0, 1);
+    bool back = !front && shade.model.two_side;
+    lit = light_point(shade.model, shade.lights, back ? shade.back : shade.front,
+                      {get3(a, kEyePosition), back ? -n : n});
+  } else {
+    lit.primary = get4(a, front ? kFrontColor : kBackColor);
+    lit.secondary = get3(a, front ? kFrontSecondary : kBackSecondary);
+  }
+  glm::vec4 color = lit.primary;
+  if (shade.texture) {
+    const Texture& t = *shade.texture;
+    glm::vec4 texel = sample_texture(t, {a[kTexCoord], a[kTexCoord + 1]}, texture_lambda(t, f));
+    color = apply_texture_env(shade.texture_env, t.format, color, texel, t.env_color);
+  }
+  // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing.
+  return glm::vec4(glm::vec3(color) + lit.secondary, color.a);
+}
+
+struct TriangleContext {
+  Framebuffer* fb;
+  const FragmentState* fragment;
+  const ShadeState* shade;
+  const Viewport* viewport;
+  RenderStats* stats;
+};
+
+void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
+                  const ClipVertex* provoking, std::vector<WindowVertex>& win) {
+  win.clear();
+  for (const ClipVertex& v : poly) win.push_back(to_window(v, *ctx.viewport));
+  double area = signed_area(win);
+  if (area == 0.0 || !std::isfinite(area)) {
+    ++ctx.stats->triangles_culled;
+    return;
+  }
+  bool front = (area > 0.0) == ctx.fragment->front_ccw;
+  CullMode cull = ctx.fragment->cull;
+  if ((cull == CullMode::kBack && !front) || (cull == CullMode::kFront && front)) {
+    ++ctx.stats->triangles_culled;
+    return;
+  }
+  // Flat shading: every fragment takes the provoking vertex's colours (GL 1.5 section 2.14.7).
+  if (provoking) {
+    for (ClipVertex& v : poly) {
+      for (int i = kFrontColor; i < kEyePosition; ++i) v.attr[i] = provoking->attr[i];
+    }
+  }
+  ++ctx.stats->triangles_rasterized;
+  Framebuffer& fb = *ctx.fb;
+  for (std::size_t i = 1; i + 1 < win.size(); ++i) {
+    const WindowVertex &a = win[0], &b = win[i], &c = win[i + 1];
+    float offset = ctx.fragment->polygon_offset ? polygon_offset(a, b, c, *ctx.fragment) : 0.0f;
+    auto emit = [&](const Fragment& f) {
+      std::size_t px = std::size_t(f.y) * fb.width + f.x;
+      ++ctx.stats->fragments;
+      float z = std::clamp(f.z + offset, 0.0f, 1.0f);
+      if (!depth_stencil_test(fb, px, z, *ctx.fragment)) return;
+      write_color(fb, px, shade_fragment(*ctx.shade, f, front), *ctx.fragment);
+      ++ctx.stats->pixels_shaded;
+    };
+    rasterize_triangle(a, b, c, fb.width, fb.height, ctx.shade->texture != nullptr, emit);
+  }
+}
+
+}  // namespace
+
+void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
+                    const FragmentState& fragment, const ShadeState& shade,
+                    const VertexInput& in, RenderStats* stats_out) {
+  RenderStats local;
+  RenderStats& stats = stats_out ? *stats_out : local;
+  auto t0 = Clock::now();
+  std::vector<ClipVertex> verts = vertex_stage(projection, shade, in, stats);
+  stats.ms_vertex += ms_since(t0);
+
+  auto t1 = Clock::now();
+  // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
+  ShadeState effective = shade;
+  if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
+  TriangleContext ctx{&fb, &fragment, &effective, &viewport, &stats};
+  bool flat = shade.shading == ShadingMode::kFlat;
+  std::vector<ClipVertex> poly, scratch;
+  std::vector<WindowVertex> win;
+  for (const Triangle& t : in.triangles) {
+    ++stats.triangles_in;
+    if (t[0] >= verts.size() || t[1] >= verts.size() || t[2] >= verts.size()) continue;
+    poly.assign({verts[t[0]], verts[t[1]], verts[t[2]]});
+    if (clip_polygon(poly, scratch)) ++stats.triangles_clipped;
+    if (poly.empty()) continue;
+    draw_polygon(ctx, poly, flat ? &verts[t[2]] : nullptr, win);
+  }
+  stats.ms_raster += ms_since(t1);
+}
+
+}  // namespace shadelab

@@ -1,0 +1,122 @@
+// The scene front end: camera and lights into eye space, each object's vertices into eye
+// space, opaque objects first and blended ones after, back to front, through draw_triangles.
+#include <algorithm>
+#include <chrono>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "shadelab/render.hpp"
+
+namespace shadelab {
+
+namespace {
+
+// GL_POSITION and GL_SPOT_DIRECTION are transformed by the modelview in force at glLight
+// (GL 1.5 section 2.14.2); for world-space scene lights that is the camera's view matrix.
+std::vector<Light> lights_in_eye_space(const Scene& scene, const glm::mat4& view) {
+  std::vector<Light> out;
+  for (const SceneLight& sl : scene.lights) {
+    Light l = sl.light;
+    if (!sl.eye_space) {
+      l.position = view * l.position;
+      l.spot_direction = glm::mat3(view) * l.spot_direction;
+    }
+    out.push_back(l);
+  }
+  return out;
+}
+
+struct EyeMesh {
+  std::vector<glm::vec4> positions;
+  std::vector<glm::vec3> normals;
+};
+
+EyeMesh to_eye_space(const Mesh& mesh, const glm::mat4& modelview) {
+  EyeMesh eye;
+  eye.positions.reserve(mesh.positions.size());
+  for (const glm::vec3& p : mesh.positions) eye.positions.push_back(modelview * glm::vec4(p, 1.0f));
+  // Normals by the inverse transpose, then normalized (as with GL_NORMALIZE).
+  glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(modelview)));
+  eye.normals.reserve(mesh.normals.size());
+  for (const glm::vec3& n : mesh.normals) {
+    glm::vec3 e = normal_matrix * n;
+    float len = glm::length(e);
+    eye.normals.push_back(len > 0.0f ? e / len : glm::vec3(0.0f, 0.0f, 1.0f));
+  }
+  return eye;
+}
+
+// Eye-space depth of the centre of an object's bounding box, for back-to-front ordering.
+float eye_depth(const SceneObject& obj, const glm::mat4& view) {
+  if (!obj.mesh || obj.mesh->positions.empty()) return 0.0f;
+  glm::vec3 lo = obj.mesh->positions[0], hi = lo;
+  for (const glm::vec3& p : obj.mesh->positions) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return (view * obj.model * glm::vec4(0.5f * (lo + hi), 1.0f)).z;
+}
+
+// Opaque objects in file order, then blended ones from far to near (SPEC section 5).
+std::vector<const SceneObject*> draw_order(const Scene& scene, const glm::mat4& view) {
+  std::vector<const SceneObject*> opaque, blended;
+  for (const SceneObject& o : scene.objects) (o.blend.enabled ? blended : opaque).push_back(&o);
+  std::stable_sort(blended.begin(), blended.end(), [&](const SceneObject* a, const SceneObject* b) {
+    return eye_depth(*a, view) < eye_depth(*b, view);  // more negative z is farther
+  });
+  opaque.insert(opaque.end(), blended.begin(), blended.end());
+  return opaque;
+}
+
+void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
+                 const glm::mat4& view, const glm::mat4& projection,
+                 std::span<const Light> lights, const RenderOptions& options,
+                 RenderStats* stats) {
+  if (!obj.mesh) return;
+  EyeMesh eye = to_eye_space(*obj.mesh, view * obj.model);
+  ShadeState shade;
+  shade.lighting = obj.lighting;
+  shade.shading = options.shading.value_or(obj.shading);
+  shade.model = scene.light_model;
+  shade.lights = lights;
+  shade.front = obj.front;
+  shade.back = obj.back.value_or(obj.front);
+  FragmentState frag;
+  frag.blend = obj.blend;
+  // Blended objects show both faces (SPEC section 5), whatever their cull setting.
+  frag.cull = obj.blend.enabled ? CullMode::kNone : obj.cull;
+  VertexInput in;
+  in.positions = eye.positions;
+  in.normals = eye.normals;
+  in.colors = obj.mesh->colors;
+  in.constant_color = obj.color;
+  in.triangles = obj.mesh->triangles;
+  Viewport vp{0, 0, fb.width, fb.height, 0.0f, 1.0f};
+  draw_triangles(fb, projection, vp, frag, shade, in, stats);
+}
+
+}  // namespace
+
+Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+  auto start = std::chrono::steady_clock::now();
+  Framebuffer fb;
+  fb.resize(scene.width, scene.height);
+  fb.clear_color(scene.background);
+  glm::mat4 view = scene.camera.view_matrix();
+  glm::mat4 projection =
+      scene.camera.projection_matrix(float(scene.width) / float(std::max(scene.height, 1)));
+  std::vector<Light> lights = lights_in_eye_space(scene, view);
+  for (const SceneObject* obj : draw_order(scene, view)) {
+    draw_object(fb, scene, *obj, view, projection, lights, options, stats);
+  }
+  Image image = fb.to_image();
+  if (stats) {
+    stats->ms_total +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  return image;
+}
+
+}  // namespace shadelab

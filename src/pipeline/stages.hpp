@@ -1,0 +1,66 @@
+// Private interfaces between the pipeline's stages: the clip-space vertex with its attributes,
+// the clipper, and the reference rasterizer. Not part of the public API.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "shadelab/pipeline.hpp"
+
+namespace shadelab::detail {
+
+/// Attribute slots carried from vertices to pixels; all interpolate linearly in clip space.
+enum Attr : int {
+  kFrontColor = 0,      // 4: lit front colour (or vertex colour when unlit)
+  kBackColor = 4,       // 4: lit back colour (two-sided lighting)
+  kFrontSecondary = 8,  // 3: separate specular, front
+  kBackSecondary = 11,  // 3: separate specular, back
+  kEyePosition = 14,    // 3: for per-pixel (Phong) lighting
+  kEyeNormal = 17,      // 3
+  kTexCoord = 20,       // 2
+  kAttrCount = 22,
+};
+using Attribs = std::array<float, kAttrCount>;
+
+struct ClipVertex {
+  glm::vec4 clip;
+  Attribs attr;
+};
+
+/// Clips a convex polygon against -w <= x, y, z <= w and w >= epsilon (Sutherland-Hodgman in
+/// homogeneous coordinates). `poly` is replaced by the clipped polygon (possibly empty).
+/// Returns true if any plane cut the polygon.
+bool clip_polygon(std::vector<ClipVertex>& poly, std::vector<ClipVertex>& scratch);
+
+/// A vertex after the viewport transform: window x, y, depth, and 1/w_clip.
+struct WindowVertex {
+  double x, y;
+  float z;
+  float inv_w;
+  const Attribs* attr;
+};
+
+/// Per-fragment inputs the rasterizer hands to the shading callback.
+struct Fragment {
+  int x, y;
+  float z;
+  Attribs attr;  // perspective-correct
+  // Texture coordinate change to the next pixel right and up (for the level of detail);
+  // computed only when the rasterizer is asked for it.
+  float ds_dx = 0, dt_dx = 0, ds_dy = 0, dt_dy = 0;
+};
+
+/// Rasterizes one triangle with the top-left fill rule at pixel centres (8 sub-pixel bits),
+/// calling `emit(fragment)` for every covered pixel inside the scissor [0, width) x [0, height).
+/// Triangles with zero area produce nothing. Returns the number of covered pixels.
+/// With `texture_lod`, fragments also carry texture-coordinate derivatives.
+template <class Emit>
+std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
+                                 const WindowVertex& c, int width, int height, bool texture_lod,
+                                 Emit&& emit);
+
+}  // namespace shadelab::detail
+
+#include "raster/reference_raster.inl"

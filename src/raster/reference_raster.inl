@@ -1,0 +1,123 @@
+// The reference rasterizer: simple and exact, kept as the oracle for faster paths.
+// Window coordinates are snapped to 1/256 pixel; coverage uses 64-bit edge functions at pixel
+// centres (x + 0.5, y + 0.5) with the top-left rule (see docs/rasterization.md).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace shadelab::detail {
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr std::int64_t kSubpixelOne = 1 << kSubpixelBits;
+
+struct FixedPoint {
+  std::int64_t x, y;
+};
+
+inline FixedPoint snap(double x, double y) {
+  return {std::llround(x * kSubpixelOne), std::llround(y * kSubpixelOne)};
+}
+
+/// Twice the signed area of (a, b, p): positive when p is left of a->b (counter-clockwise
+/// with y up, GL window space).
+inline std::int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p) {
+  return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+/// Top-left rule for a counter-clockwise triangle in y-up window space: a pixel centre exactly
+/// on an edge belongs to the triangle if the edge is a left edge (going down) or a top edge
+/// (horizontal, going left, the interior below it). Each edge shared by two triangles thus
+/// gives its pixels to exactly one of them.
+inline bool is_top_left(FixedPoint a, FixedPoint b) {
+  std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+  return dy < 0 || (dy == 0 && dx < 0);
+}
+
+// Perspective-correct texture coordinates at any point (inside or not) from its unnormalized
+// barycentric weights (edge functions).
+inline void texcoord_at(const WindowVertex* const v[3], double w0, double w1, double w2,
+                        double& s, double& t) {
+  double q0 = w0 * v[0]->inv_w, q1 = w1 * v[1]->inv_w, q2 = w2 * v[2]->inv_w;
+  double inv = 1.0 / (q0 + q1 + q2);
+  s = (q0 * (*v[0]->attr)[kTexCoord] + q1 * (*v[1]->attr)[kTexCoord] +
+       q2 * (*v[2]->attr)[kTexCoord]) * inv;
+  t = (q0 * (*v[0]->attr)[kTexCoord + 1] + q1 * (*v[1]->attr)[kTexCoord + 1] +
+       q2 * (*v[2]->attr)[kTexCoord + 1]) * inv;
+}
+
+// Texture-coordinate differences to the pixel centres one to the right and one up.
+inline void texture_derivatives(const WindowVertex* const v[3], const FixedPoint p[3],
+                                FixedPoint centre, Fragment& frag) {
+  double s0, t0, s1, t1, s2, t2;
+  auto weights = [&](FixedPoint c, double& s, double& t) {
+    texcoord_at(v, double(edge_function(p[1], p[2], c)), double(edge_function(p[2], p[0], c)),
+                double(edge_function(p[0], p[1], c)), s, t);
+  };
+  weights(centre, s0, t0);
+  weights({centre.x + kSubpixelOne, centre.y}, s1, t1);
+  weights({centre.x, centre.y + kSubpixelOne}, s2, t2);
+  frag.ds_dx = float(s1 - s0);
+  frag.dt_dx = float(t1 - t0);
+  frag.ds_dy = float(s2 - s0);
+  frag.dt_dy = float(t2 - t0);
+}
+
+template <class Emit>
+std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
+                                 const WindowVertex& c, int width, int height, bool texture_lod,
+                                 Emit&& emit) {
+  const WindowVertex* v[3] = {&a, &b, &c};
+  FixedPoint p[3] = {snap(a.x, a.y), snap(b.x, b.y), snap(c.x, c.y)};
+  std::int64_t area = edge_function(p[0], p[1], p[2]);
+  if (area == 0) return 0;
+  if (area < 0) {  // make it counter-clockwise; the weights follow the vertices
+    std::swap(v[1], v[2]);
+    std::swap(p[1], p[2]);
+    area = -area;
+  }
+  // Bias of -1 on edges that are not top-left turns "> 0 or (== 0 and top-left)" into ">= 0".
+  std::int64_t bias[3] = {is_top_left(p[1], p[2]) ? 0 : -1, is_top_left(p[2], p[0]) ? 0 : -1,
+                          is_top_left(p[0], p[1]) ? 0 : -1};
+  std::int64_t min_x = std::min({p[0].x, p[1].x, p[2].x}), max_x = std::max({p[0].x, p[1].x, p[2].x});
+  std::int64_t min_y = std::min({p[0].y, p[1].y, p[2].y}), max_y = std::max({p[0].y, p[1].y, p[2].y});
+  int x0 = static_cast<int>(std::max<std::int64_t>(0, (min_x >> kSubpixelBits) - 1));
+  int x1 = static_cast<int>(std::min<std::int64_t>(width - 1, (max_x >> kSubpixelBits) + 1));
+  int y0 = static_cast<int>(std::max<std::int64_t>(0, (min_y >> kSubpixelBits) - 1));
+  int y1 = static_cast<int>(std::min<std::int64_t>(height - 1, (max_y >> kSubpixelBits) + 1));
+  std::uint64_t covered = 0;
+  Fragment frag;
+  for (int y = y0; y <= y1; ++y) {
+    for (int x = x0; x <= x1; ++x) {
+      FixedPoint centre{std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2,
+                        std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2};
+      std::int64_t w0 = edge_function(p[1], p[2], centre);
+      std::int64_t w1 = edge_function(p[2], p[0], centre);
+      std::int64_t w2 = edge_function(p[0], p[1], centre);
+      if (w0 + bias[0] < 0 || w1 + bias[1] < 0 || w2 + bias[2] < 0) continue;
+      // Screen-space barycentrics: depth is linear in window space (GL 1.5 section 3.5.1).
+      double b0 = double(w0) / double(area), b1 = double(w1) / double(area);
+      double b2 = 1.0 - b0 - b1;
+      frag.x = x;
+      frag.y = y;
+      frag.z = static_cast<float>(b0 * v[0]->z + b1 * v[1]->z + b2 * v[2]->z);
+      // Perspective-correct attributes: interpolate a/w and 1/w, then divide.
+      double q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
+      double inv = 1.0 / (q0 + q1 + q2);
+      q0 *= inv;
+      q1 *= inv;
+      q2 *= inv;
+      for (int i = 0; i < kAttrCount; ++i) {
+        frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
+                                          q2 * (*v[2]->attr)[i]);
+      }
+      if (texture_lod) texture_derivatives(v, p, centre, frag);
+      ++covered;
+      emit(frag);
+    }
+  }
+  return covered;
+}
+
+}  // namespace shadelab::detail
