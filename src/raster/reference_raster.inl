@@ -1,6 +1,6 @@
 // The reference rasterizer: simple and exact, kept as the oracle for faster paths.
 // Window coordinates are snapped to 1/256 pixel; coverage uses 64-bit edge functions at pixel
-// centres (x + 0.5, y + 0.5) with the top-left rule (see docs/rasterization.md).
+// centres (x + 0.5, y + 0.5) with llvmpipe's fill rule (see docs/rasterization.md).
 #pragma once
 
 #include <algorithm>
@@ -26,13 +26,14 @@ inline std::int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p) {
   return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
 }
 
-/// Top-left rule for a counter-clockwise triangle in y-up window space: a pixel centre exactly
-/// on an edge belongs to the triangle if the edge is a left edge (going down) or a top edge
-/// (horizontal, going left, the interior below it). Each edge shared by two triangles thus
-/// gives its pixels to exactly one of them.
-inline bool is_top_left(FixedPoint a, FixedPoint b) {
+/// Fill rule for a counter-clockwise triangle in y-up window space: a pixel centre exactly on
+/// an edge belongs to the triangle if the edge is a left edge (going down) or a bottom edge
+/// (horizontal, going right, the interior above it). This is the top-left rule of a y-down
+/// raster whose first row is GL's bottom row (OSMesa's buffer order), and what Mesa's llvmpipe
+/// does; each edge shared by two triangles gives its pixels to exactly one of them.
+inline bool owns_edge(FixedPoint a, FixedPoint b) {
   std::int64_t dx = b.x - a.x, dy = b.y - a.y;
-  return dy < 0 || (dy == 0 && dx < 0);
+  return dy < 0 || (dy == 0 && dx > 0);
 }
 
 // Perspective-correct texture coordinates at any point (inside or not) from its unnormalized
@@ -77,9 +78,9 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
     std::swap(p[1], p[2]);
     area = -area;
   }
-  // Bias of -1 on edges that are not top-left turns "> 0 or (== 0 and top-left)" into ">= 0".
-  std::int64_t bias[3] = {is_top_left(p[1], p[2]) ? 0 : -1, is_top_left(p[2], p[0]) ? 0 : -1,
-                          is_top_left(p[0], p[1]) ? 0 : -1};
+  // Bias of -1 on edges the triangle does not own turns "> 0 or (== 0 and owned)" into ">= 0".
+  std::int64_t bias[3] = {owns_edge(p[1], p[2]) ? 0 : -1, owns_edge(p[2], p[0]) ? 0 : -1,
+                          owns_edge(p[0], p[1]) ? 0 : -1};
   std::int64_t min_x = std::min({p[0].x, p[1].x, p[2].x}), max_x = std::max({p[0].x, p[1].x, p[2].x});
   std::int64_t min_y = std::min({p[0].y, p[1].y, p[2].y}), max_y = std::max({p[0].y, p[1].y, p[2].y});
   int x0 = static_cast<int>(std::max<std::int64_t>(0, (min_x >> kSubpixelBits) - 1));

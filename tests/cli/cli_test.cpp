@@ -1,0 +1,121 @@
+// The shadelab command as a user runs it: exit statuses, exact error texts, overrides, the
+// --size/--shading/--stats options, and no partial output after a failure.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "shadelab/image.hpp"
+#include "support/test_support.hpp"
+
+namespace shadelab {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_cli;
+
+std::string write_file(const std::string& name, const std::string& text) {
+  fs::path p = fs::path(test::output_dir()) / name;
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+std::string fresh_output(const std::string& name) {
+  fs::path p = fs::path(test::output_dir()) / name;
+  fs::remove(p);
+  return p.string();
+}
+
+TEST(Cli, RendersTheTeapotAtTheRequestedSize) {
+  std::string out = fresh_output("cli_teapot.png");
+  auto r = run_cli("render scenes/teapot.json --size 64x48 -o '" + out + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  Image img;
+  std::string error;
+  ASSERT_TRUE(read_image(out, img, &error)) << error;
+  EXPECT_EQ(img.width, 64);
+  EXPECT_EQ(img.height, 48);
+}
+
+TEST(Cli, StatsReportsCountsAndTimes) {
+  auto r = run_cli("render scenes/teapot.json --size 64x48 --stats -o '" +
+                   fresh_output("cli_stats.png") + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.out.find("triangles"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("total"), std::string::npos) << r.out;
+}
+
+TEST(Cli, BadSceneGivesLocatedErrorStatus2AndNoOutput) {
+  std::string scene = write_file("cli_bad_spot.json",
+                                 "{\n"
+                                 "  \"lights\": [\n"
+                                 "    {\"spot\": {\"cutoff\": 120}}\n"
+                                 "  ]\n"
+                                 "}\n");
+  std::string out = fresh_output("cli_bad_spot.png");
+  auto r = run_cli("render '" + scene + "' -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, scene + ":3:25: lights[0].spot.cutoff: 120 is out of range (0..90, or 180)\n");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+TEST(Cli, MissingSceneFile) {
+  auto r = run_cli("render does/not/exist.json -o '" + fresh_output("cli_missing.png") + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "does/not/exist.json: cannot open scene file: No such file or directory\n");
+}
+
+TEST(Cli, BadOverrideValueIsReportedAgainstSet) {
+  auto r = run_cli("render scenes/teapot.json --set lights[0].spot.cutoff=200 -o '" +
+                   fresh_output("cli_set.png") + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "--set: lights[0].spot.cutoff: 200 is out of range (0..90, or 180)\n");
+}
+
+TEST(Cli, OverrideChangesTheImage) {
+  std::string a = fresh_output("cli_set_a.png"), b = fresh_output("cli_set_b.png");
+  ASSERT_EQ(run_cli("render scenes/teapot.json --size 48x36 -o '" + a + "'").exit_status, 0);
+  auto r = run_cli("render scenes/teapot.json --size 48x36 --set 'lights[0].diffuse=[0,0,1]' -o '" +
+                   b + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  Image ia, ib;
+  std::string e;
+  ASSERT_TRUE(read_image(a, ia, &e) && read_image(b, ib, &e)) << e;
+  EXPECT_NE(ia.rgba, ib.rgba);
+}
+
+TEST(Cli, BadSizeAndShading) {
+  auto r = run_cli("render scenes/teapot.json --size 64by48");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "shadelab render: --size: expected WIDTHxHEIGHT (e.g. 1920x1080), got \"64by48\"\n");
+  auto s = run_cli("render scenes/teapot.json --size 0x48");
+  EXPECT_EQ(s.exit_status, 2);
+  EXPECT_EQ(s.err, "--set: image.width: 0 is out of range (1..16384)\n");
+  auto t = run_cli("render scenes/teapot.json --shading toon");
+  EXPECT_EQ(t.exit_status, 2);
+  EXPECT_NE(t.err.find("--shading"), std::string::npos) << t.err;
+}
+
+TEST(Cli, RefusesToOverwriteTheInput) {
+  std::string scene = write_file("cli_self.json", "{}");
+  auto r = run_cli("render '" + scene + "' -o '" + scene + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "shadelab render: refusing to overwrite the input file " + scene + "\n");
+}
+
+TEST(Cli, UnwritableOutputIsStatus1) {
+  auto r = run_cli("render scenes/teapot.json --size 8x8 -o /nonexistent-dir/x.png");
+  EXPECT_EQ(r.exit_status, 1);
+  EXPECT_EQ(r.err, "shadelab render: cannot write /nonexistent-dir/x.png: No such file or directory\n");
+}
+
+TEST(Cli, UsageErrorsAndHelp) {
+  EXPECT_EQ(run_cli("").exit_status, 2);
+  EXPECT_EQ(run_cli("frobnicate").exit_status, 2);
+  auto h = run_cli("render --help");
+  EXPECT_EQ(h.exit_status, 0);
+  EXPECT_NE(h.out.find("Examples"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shadelab
