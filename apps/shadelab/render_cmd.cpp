@@ -20,6 +20,7 @@ struct RenderArgs {
   std::string size;
   std::string shading;
   std::vector<std::string> overrides;
+  int samples = 0;
   bool stats = false;
 };
 
@@ -55,6 +56,8 @@ int run_render(const RenderArgs& args) {
     options.overrides.push_back("image.width=" + m[1].str());
     options.overrides.push_back("image.height=" + m[2].str());
   }
+  // Through the scene's validation too (square numbers only, size limits).
+  if (args.samples > 0) options.overrides.push_back("image.samples=" + std::to_string(args.samples));
   RenderOptions render_options;
   if (args.shading == "flat") render_options.shading = ShadingMode::kFlat;
   if (args.shading == "gouraud") render_options.shading = ShadingMode::kGouraud;
@@ -94,6 +97,9 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
   cmd->add_option("--set", args->overrides,
                   "Override a scene value by key path, e.g. lights[0].spot.cutoff=30 (repeatable)");
+  cmd->add_option("--samples", args->samples,
+                  "Anti-aliasing: samples per pixel, 1, 4, 9, 16 ... 64 (supersampling)")
+      ->check(CLI::Range(1, 64));
   cmd->add_flag("--stats", args->stats, "Print triangle and pixel counts and time per stage");
   cmd->footer(
       "Examples:\n"

@@ -12,6 +12,7 @@ namespace shadelab {
 
 struct RenderOptions {
   std::optional<ShadingMode> shading;  ///< overrides every object's shading mode
+  std::optional<int> samples;          ///< overrides Scene::samples (a square number)
 };
 
 /// Renders `scene` at scene.width x scene.height.

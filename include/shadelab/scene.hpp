@@ -77,6 +77,9 @@ struct SceneObject {
 struct Scene {
   int width = 640;
   int height = 480;
+  /// Anti-aliasing: samples per pixel, a square number n*n (1, 4, 9, ... 64); the scene is
+  /// rendered on an n-times larger grid and each n x n block averaged (supersampling).
+  int samples = 1;
   glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
   Camera camera;
   LightModel light_model;

@@ -97,12 +97,39 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   draw_triangles(fb, projection, vp, frag, shade, in, stats);
 }
 
+// Averages each n x n block of `big` into one pixel (ordered-grid supersampling resolve).
+Image downsample(const Image& big, int n) {
+  Image out;
+  out.width = big.width / n;
+  out.height = big.height / n;
+  out.rgba.resize(std::size_t(out.width) * out.height * 4);
+  int count = n * n;
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        int sum = 0;
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) sum += big.pixel(x * n + i, y * n + j)[c];
+        out.pixel(x, y)[c] = static_cast<std::uint8_t>((sum + count / 2) / count);
+      }
+    }
+  }
+  return out;
+}
+
+int grid_size(int samples) {
+  int n = 1;
+  while ((n + 1) * (n + 1) <= samples) ++n;
+  return n;
+}
+
 }  // namespace
 
 Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
   auto start = std::chrono::steady_clock::now();
+  int n = grid_size(options.samples.value_or(scene.samples));
   Framebuffer fb;
-  fb.resize(scene.width, scene.height);
+  fb.resize(scene.width * n, scene.height * n);
   fb.clear_color(scene.background);
   glm::mat4 view = scene.camera.view_matrix();
   glm::mat4 projection =
@@ -112,6 +139,14 @@ Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats
     draw_object(fb, scene, *obj, view, projection, lights, options, stats);
   }
   Image image = fb.to_image();
+  if (n > 1) {
+    auto t = std::chrono::steady_clock::now();
+    image = downsample(image, n);
+    if (stats) {
+      stats->ms_resolve +=
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+    }
+  }
   if (stats) {
     stats->ms_total +=
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
