@@ -1,9 +1,24 @@
 // Entry point of the shadelab command: parses the command line with CLI11 and runs the chosen
 // subcommand. Usage errors exit with status 2.
-#include <iostream>
+#include <utility>
 #include <vector>
 
 #include "commands.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  shadelab::cli::Action (*add)(CLI::App&);
+};
+
+constexpr Command kCommands[] = {
+    {"render", shadelab::cli::add_render_command},
+    {"sweep", shadelab::cli::add_sweep_command},
+    {"materials", shadelab::cli::add_materials_command},
+};
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"shadelab: the OpenGL lighting, shading and materials system on the CPU"};
@@ -12,11 +27,11 @@ int main(int argc, char** argv) {
       "Examples:\n"
       "  shadelab render scenes/teapot.json -o teapot.png\n"
       "  shadelab render scenes/teapot.json --shading flat --size 800x600 -o flat.png\n"
-      "  shadelab render scenes/teapot.json --set lights[0].spot.cutoff=30 --stats -o spot.png\n"
+      "  shadelab sweep scenes/teapot.json --vary shading=flat,gouraud,phong -o modes.png\n"
+      "  shadelab materials --sheet materials.png\n"
       "Run 'shadelab COMMAND --help' for a command's options.");
-  std::vector<std::pair<CLI::App*, shadelab::cli::Action>> actions;
-  shadelab::cli::Action render = shadelab::cli::add_render_command(app);
-  actions.emplace_back(app.get_subcommand("render"), render);
+  std::vector<std::pair<const char*, shadelab::cli::Action>> actions;
+  for (const Command& c : kCommands) actions.emplace_back(c.name, c.add(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -27,8 +42,8 @@ int main(int argc, char** argv) {
     app.exit(e);
     return shadelab::cli::kExitBadInput;
   }
-  for (auto& [sub, action] : actions) {
-    if (sub->parsed()) return action();
+  for (auto& [name, action] : actions) {
+    if (app.get_subcommand(name)->parsed()) return action();
   }
   return shadelab::cli::kExitBadInput;
 }
