@@ -18,5 +18,6 @@ using Action = std::function<int()>;
 Action add_render_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);
 Action add_materials_command(CLI::App& app);
+Action add_gallery_command(CLI::App& app);
 
 }  // namespace shadelab::cli

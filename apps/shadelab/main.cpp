@@ -16,6 +16,7 @@ constexpr Command kCommands[] = {
     {"render", shadelab::cli::add_render_command},
     {"sweep", shadelab::cli::add_sweep_command},
     {"materials", shadelab::cli::add_materials_command},
+    {"gallery", shadelab::cli::add_gallery_command},
 };
 
 }  // namespace

@@ -129,6 +129,9 @@ std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnost
                                const std::function<void(int, int, const std::string&)>& progress) {
   if (!validate(r, diags)) return std::nullopt;
   std::vector<Cell> cells = combinations(r);
+  if (r.labels.size() == cells.size()) {
+    for (std::size_t i = 0; i < cells.size(); ++i) cells[i].label = r.labels[i];
+  }
   std::vector<SheetCell> sheet;
   int done = 0;
   for (const Cell& c : cells) {

@@ -31,6 +31,7 @@ struct SweepRequest {
   std::optional<int> samples;
   int columns = 0;                      ///< 0: one row per value of the second key
   std::string title;
+  std::vector<std::string> labels;      ///< replace the "key = value" labels, in cell order
 };
 
 /// Renders every combination and makes the sheet. Problems go to `diags` (with file "--vary"

@@ -75,6 +75,7 @@ struct SceneObject {
 };
 
 struct Scene {
+  std::string caption;  ///< free text describing the scene (shown by the gallery)
   int width = 640;
   int height = 480;
   /// Anti-aliasing: samples per pixel, a square number n*n (1, 4, 9, ... 64); the scene is
