@@ -17,6 +17,7 @@ constexpr Command kCommands[] = {
     {"sweep", shadelab::cli::add_sweep_command},
     {"materials", shadelab::cli::add_materials_command},
     {"gallery", shadelab::cli::add_gallery_command},
+    {"shadow-matrix", shadelab::cli::add_shadow_matrix_command},
 };
 
 }  // namespace
