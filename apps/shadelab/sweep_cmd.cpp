@@ -13,7 +13,7 @@ namespace shadelab::cli {
 namespace {
 
 struct SweepArgs {
-  std::string scene, output, shading, title;
+  std::string scene, output, shading, title, size;
   std::vector<std::string> vary, overrides;
   int samples = 0, columns = 0;
 };
@@ -32,6 +32,15 @@ int run(const SweepArgs& a) {
   SweepRequest r;
   r.scene = a.scene;
   r.overrides = a.overrides;
+  if (!a.size.empty()) {
+    std::size_t x = a.size.find('x');
+    if (x == std::string::npos || a.size.find_first_not_of("0123456789x") != std::string::npos) {
+      std::cerr << "shadelab sweep: --size: expected WIDTHxHEIGHT (e.g. 320x240), got \"" << a.size << "\"\n";
+      return kExitBadInput;
+    }
+    r.overrides.push_back("image.width=" + a.size.substr(0, x));
+    r.overrides.push_back("image.height=" + a.size.substr(x + 1));
+  }
   r.columns = a.columns;
   r.title = a.title;
   if (a.samples > 0) r.samples = a.samples;
@@ -81,6 +90,7 @@ Action add_sweep_command(CLI::App& app) {
                   "the shading mode)")->required();
   cmd->add_option("-o,--output", a->output, "Output PNG")->required();
   cmd->add_option("--set", a->overrides, "Override a scene value for every picture (repeatable)");
+  cmd->add_option("--size", a->size, "Size of each picture, WIDTHxHEIGHT");
   cmd->add_option("--shading", a->shading, "Shading mode for every object")
       ->check(CLI::IsMember({"flat", "gouraud", "phong"}));
   cmd->add_option("--samples", a->samples, "Anti-aliasing samples per pixel (1, 4, 9 ... 64)")

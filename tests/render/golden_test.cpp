@@ -18,7 +18,7 @@ Image render_file(const std::string& file, std::optional<ShadingMode> mode, int 
   LoadResult r = load_scene_file(std::string(SHADELAB_SOURCE_DIR) + "/" + file, opts);
   EXPECT_TRUE(r.scene) << r.diagnostics.to_string();
   if (!r.scene) return {};
-  return render_scene(*r.scene, RenderOptions{mode});
+  return render_scene(*r.scene, RenderOptions{mode, std::nullopt});
 }
 
 TEST(Golden, TeapotInEveryShadingMode) {
@@ -42,7 +42,7 @@ TEST(Golden, ShadingModesDifferOnACoarseMesh) {
     opts.overrides = {"image.width=160", "image.height=120", "objects[0].shape.tessellation=3"};
     LoadResult r = load_scene_file(std::string(SHADELAB_SOURCE_DIR) + "/scenes/teapot.json", opts);
     EXPECT_TRUE(r.scene) << r.diagnostics.to_string();
-    return r.scene ? render_scene(*r.scene, RenderOptions{m}) : Image{};
+    return r.scene ? render_scene(*r.scene, RenderOptions{m, std::nullopt}) : Image{};
   };
   Image f = coarse(ShadingMode::kFlat), g = coarse(ShadingMode::kGouraud), p = coarse(ShadingMode::kPhong);
   auto differing = [](const Image& a, const Image& b) {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <memory>
 
+#include <glm/trigonometric.hpp>
+
 #include "shadelab/render.hpp"
 #include "shadelab/shapes.hpp"
 
@@ -34,7 +36,7 @@ TEST(RenderAnalytic, DirectionalLightOnWallInEveryMode) {
   l.light = default_light(0);  // white, from +z
   s.lights.push_back(l);
   for (ShadingMode m : {ShadingMode::kFlat, ShadingMode::kGouraud, ShadingMode::kPhong}) {
-    Image img = render_scene(s, RenderOptions{m});
+    Image img = render_scene(s, RenderOptions{m, std::nullopt});
     EXPECT_EQ(red(img, 32, 32), 214) << int(m);
     EXPECT_EQ(red(img, 3, 60), 214) << int(m);
   }
@@ -51,7 +53,7 @@ TEST(RenderAnalytic, SpotLitRadiusFollowsTanCutoff) {
     l.light.position = {0, 0, 2, 1};
     l.light.spot_cutoff = cutoff;
     s.lights.push_back(l);
-    Image img = render_scene(s, RenderOptions{ShadingMode::kPhong});
+    Image img = render_scene(s, RenderOptions{ShadingMode::kPhong, std::nullopt});
     float radius = 2.0f * std::tan(glm::radians(cutoff));
     auto at = [&](float r) {  // red at world distance r to the right of the centre
       int x = int(std::floor((r + 2.0f) / 4.0f * 64.0f));
@@ -98,7 +100,7 @@ TEST(RenderAnalytic, MeshSizeHighlightGouraudVersusPhong) {
     s.lights.push_back(l);
     s.camera.projection = Camera::Projection::kPerspective;
     s.camera.fovy_degrees = 28.0f;
-    return red(render_scene(s, RenderOptions{mode}), 32, 32);
+    return red(render_scene(s, RenderOptions{mode, std::nullopt}), 32, 32);
   };
   EXPECT_LT(centre(1, ShadingMode::kGouraud), 40);
   EXPECT_GT(centre(20, ShadingMode::kGouraud), 200);
