@@ -98,11 +98,13 @@ class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
     return true;
   }
   bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) override {
-    // nlohmann: "[json.exception.parse_error.101] parse error at line L, column C: MESSAGE"
+    // nlohmann: "[json.exception.parse_error.101] parse error at line L, column C: MESSAGE";
+    // a number too large for a double comes as out_of_range.406.
     std::string what = e.what();
     std::size_t colon = what.find(": ", what.find("column"));
-    std::string message = colon == std::string::npos ? what : what.substr(colon + 2);
-    diags_.error(location_of(std::min(*furthest_ ? *furthest_ - 1 : 0, text_.size())), "", message);
+    std::string message = e.id == 406 ? "expected a finite number"
+                          : colon == std::string::npos ? what : what.substr(colon + 2);
+    diags_.error(token_start(), "", message);
     return false;
   }
 
