@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Takes a fresh Debian 12 machine to a built shadelab: installs the Debian packages the project
-# needs (only those missing), builds everything, and renders the example scenes into out/.
+# needs (only those missing), builds everything, and renders the shiny teapot and the lecture's
+# gallery into out/.
 #   scripts/setup.sh            install, build, render
 #   scripts/setup.sh --deps     install packages only
 #   scripts/setup.sh --build    install and build, render nothing
@@ -37,6 +38,7 @@ render_examples() {
   mkdir -p out
   ./build/shadelab render scenes/teapot.json -o out/teapot.png
   echo "setup: rendered out/teapot.png (the lecture's shiny red teapot)"
+  ./build/shadelab gallery out/gallery
 }
 
 case "${1:-all}" in
