@@ -3,8 +3,13 @@
 #pragma once
 
 #include <functional>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "shadelab/contact_sheet.hpp"
 
 namespace shadelab::cli {
 
@@ -14,6 +19,14 @@ inline constexpr int kExitBadInput = 2;
 
 /// A subcommand's action, run after parsing succeeded.
 using Action = std::function<int()>;
+
+/// Turns --size "WIDTHxHEIGHT" into image.width/height overrides (validated by the scene
+/// reader like any value). Prints the error for `command` and returns false when malformed.
+bool add_size_overrides(const std::string& size, const char* command,
+                        std::vector<std::string>& overrides);
+
+/// Loads the default TrueType font, printing the error for `command` on failure.
+std::unique_ptr<Font> load_default_font(const char* command);
 
 Action add_render_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);

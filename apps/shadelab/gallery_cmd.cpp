@@ -154,12 +154,8 @@ int run(const GalleryArgs& a) {
     return kExitBadInput;
   }
   std::sort(scenes.begin(), scenes.end());
-  std::string error;
-  std::unique_ptr<Font> font = Font::load(Font::kDefaultPath, &error);
-  if (!font) {
-    std::cerr << "shadelab gallery: " << error << "\n";
-    return kExitFailure;
-  }
+  std::unique_ptr<Font> font = load_default_font("gallery");
+  if (!font) return kExitFailure;
   std::vector<Entry> entries;
   Diagnostics diags;
   for (const fs::path& s : scenes) {
@@ -167,7 +163,13 @@ int run(const GalleryArgs& a) {
     std::cerr << "gallery: " << entries.back().image << "\n";
   }
   fs::path rows = fs::path(a.scenes) / "rows.json";
-  if (diags.empty() && fs::exists(rows)) render_rows(rows, a, *font, entries, diags);
+  if (diags.empty() && fs::exists(rows)) {
+    try {
+      render_rows(rows, a, *font, entries, diags);
+    } catch (const nlohmann::json::exception& e) {  // a value of the wrong type in rows.json
+      diags.error({rows.string(), 0, 0}, "", e.what());
+    }
+  }
   if (!diags.empty()) {
     std::cerr << diags.to_string();
     return kExitBadInput;

@@ -56,12 +56,9 @@ int run(const MaterialsArgs& a) {
     print_presets();
     return kExitOk;
   }
+  std::unique_ptr<Font> font = load_default_font("materials");
+  if (!font) return kExitFailure;
   std::string error;
-  std::unique_ptr<Font> font = Font::load(Font::kDefaultPath, &error);
-  if (!font) {
-    std::cerr << "shadelab materials: " << error << "\n";
-    return kExitFailure;
-  }
   std::vector<SheetCell> cells;
   for (const MaterialPreset& p : material_presets()) {
     cells.push_back({render_scene(sphere_scene(p.material, a.size)), p.name});

@@ -3,7 +3,6 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <regex>
 
 #include "commands.hpp"
 #include "shadelab/image.hpp"
@@ -45,16 +44,9 @@ void print_stats(const RenderStats& s, const Scene& scene) {
 int run_render(const RenderArgs& args) {
   LoadOptions options;
   options.overrides = args.overrides;
-  if (!args.size.empty()) {
-    std::smatch m;
-    if (!std::regex_match(args.size, m, std::regex(R"((\d{1,9})x(\d{1,9}))"))) {
-      std::cerr << "shadelab render: --size: expected WIDTHxHEIGHT (e.g. 1920x1080), got \""
-                << args.size << "\"\n";
-      return kExitBadInput;
-    }
-    // Through the scene's own validation, so limits and messages are the same.
-    options.overrides.push_back("image.width=" + m[1].str());
-    options.overrides.push_back("image.height=" + m[2].str());
+  // Through the scene's own validation, so limits and messages are the same.
+  if (!args.size.empty() && !add_size_overrides(args.size, "render", options.overrides)) {
+    return kExitBadInput;
   }
   // Through the scene's validation too (square numbers only, size limits).
   if (args.samples > 0) options.overrides.push_back("image.samples=" + std::to_string(args.samples));

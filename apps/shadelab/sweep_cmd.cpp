@@ -32,15 +32,7 @@ int run(const SweepArgs& a) {
   SweepRequest r;
   r.scene = a.scene;
   r.overrides = a.overrides;
-  if (!a.size.empty()) {
-    std::size_t x = a.size.find('x');
-    if (x == std::string::npos || a.size.find_first_not_of("0123456789x") != std::string::npos) {
-      std::cerr << "shadelab sweep: --size: expected WIDTHxHEIGHT (e.g. 320x240), got \"" << a.size << "\"\n";
-      return kExitBadInput;
-    }
-    r.overrides.push_back("image.width=" + a.size.substr(0, x));
-    r.overrides.push_back("image.height=" + a.size.substr(x + 1));
-  }
+  if (!a.size.empty() && !add_size_overrides(a.size, "sweep", r.overrides)) return kExitBadInput;
   r.columns = a.columns;
   r.title = a.title;
   if (a.samples > 0) r.samples = a.samples;
@@ -60,12 +52,9 @@ int run(const SweepArgs& a) {
     }
     r.vary.push_back(v);
   }
+  std::unique_ptr<Font> font = load_default_font("sweep");
+  if (!font) return kExitFailure;
   std::string error;
-  std::unique_ptr<Font> font = Font::load(Font::kDefaultPath, &error);
-  if (!font) {
-    std::cerr << "shadelab sweep: " << error << "\n";
-    return kExitFailure;
-  }
   Diagnostics diags;
   std::optional<Image> sheet = run_sweep(r, *font, diags, progress_bar);
   if (!sheet) {
