@@ -8,12 +8,14 @@
 #include <vector>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "shadelab/light.hpp"
 #include "shadelab/material.hpp"
 #include "shadelab/mesh.hpp"
+#include "shadelab/texture.hpp"
 
 namespace shadelab {
 
@@ -72,6 +74,9 @@ struct SceneObject {
   BlendState blend;                 ///< enabled => drawn after opaque objects, back to front
   bool lighting = true;             ///< false: vertex colours, else `color`, unlit
   glm::vec4 color{1.0f};            ///< colour when lighting is off and the mesh has none
+  std::shared_ptr<const Texture> texture;  ///< applied with `texture_env` when set
+  TextureEnvMode texture_env = TextureEnvMode::kModulate;
+  glm::vec2 texture_repeat{1.0f};  ///< texture coordinates are multiplied by this (tiling)
 };
 
 struct Scene {

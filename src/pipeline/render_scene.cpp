@@ -31,6 +31,7 @@ std::vector<Light> lights_in_eye_space(const Scene& scene, const glm::mat4& view
 struct EyeMesh {
   std::vector<glm::vec4> positions;
   std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> texcoords;  ///< scaled by the object's texture_repeat
 };
 
 EyeMesh to_eye_space(const Mesh& mesh, const glm::mat4& modelview) {
@@ -83,6 +84,8 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   shade.lights = lights;
   shade.front = obj.front;
   shade.back = obj.back.value_or(obj.front);
+  shade.texture = obj.texture.get();
+  shade.texture_env = obj.texture_env;
   FragmentState frag;
   frag.blend = obj.blend;
   // Blended objects show both faces (SPEC section 5), whatever their cull setting.
@@ -91,6 +94,10 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   in.positions = eye.positions;
   in.normals = eye.normals;
   in.colors = obj.mesh->colors;
+  if (obj.texture) {
+    for (const glm::vec2& t : obj.mesh->texcoords) eye.texcoords.push_back(t * obj.texture_repeat);
+    in.texcoords = eye.texcoords;
+  }
   in.constant_color = obj.color;
   in.triangles = obj.mesh->triangles;
   Viewport vp{0, 0, fb.width, fb.height, 0.0f, 1.0f};

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "scene/reader.hpp"
+#include "shadelab/image.hpp"
 #include "shadelab/materials.hpp"
 #include "shadelab/scene_io.hpp"
 #include "shadelab/shapes.hpp"
@@ -52,6 +53,7 @@ class SceneReader {
   const LoadOptions& options_;
   std::map<std::string, Material> materials_;
   std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+  std::map<std::string, std::shared_ptr<const Texture>> textures_;
   long long triangles_ = 0;
 
   void image(const JsonValue& v, Scene& s) {
@@ -196,7 +198,7 @@ class SceneReader {
 
   void object(const JsonValue& v, const std::string& path, Scene& s) {
     if (!r_.object(v, path, {"name", "shape", "transform", "material", "back_material", "shading", "cull",
-                             "blend", "lighting", "color"})) return;
+                             "blend", "lighting", "color", "texture"})) return;
     SceneObject o;
     o.name = path;
     if (const JsonValue* n = v.find("name"); n && r_.is_type(*n, Type::kString, join_path(path, "name"))) o.name = n->text;
@@ -208,6 +210,7 @@ class SceneReader {
     r_.boolean(v, "lighting", path, o.lighting);
     r_.color(v, "color", path, o.color, 0, 1);
     if (const JsonValue* t = v.find("transform")) o.model = transform(*t, join_path(path, "transform"));
+    if (const JsonValue* t = v.find("texture")) texture(*t, join_path(path, "texture"), o);
     bool translucent = o.lighting ? o.front.diffuse.a < 1.0f : o.color.a < 1.0f;
     if (blend == 2 || ((blend <= 0) && translucent)) o.blend = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
     if (blend == 3) o.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
@@ -262,6 +265,67 @@ class SceneReader {
       else m = glm::scale(m, s);
     }
     return m;
+  }
+
+  // "texture": "file.png" or {"file", "wrap", "filter", "env"}: glTexImage2D + glTexParameter
+  // + glTexEnv. Mipmaps are built for the mipmapped filters (the default is trilinear).
+  void texture(const JsonValue& v, const std::string& path, SceneObject& o) {
+    JsonValue named;
+    const JsonValue* t = &v;
+    if (v.type == Type::kString) {
+      named.type = Type::kObject;
+      named.location = v.location;
+      named.members.emplace_back("file", v);
+      named.key_locations.push_back(v.location);
+      t = &named;
+    }
+    if (!r_.object(*t, path, {"file", "wrap", "filter", "env", "repeat"})) return;
+    if (const JsonValue* rep = t->find("repeat")) {
+      std::vector<double> n;
+      if (r_.numbers(*rep, join_path(path, "repeat"), n, 2, -1, -1e6, 1e6)) o.texture_repeat = {float(n[0]), float(n[1])};
+    }
+    const JsonValue* f = t->find("file");
+    if (!f) {
+      r_.error(*t, path, "missing required key \"file\"");
+      return;
+    }
+    std::string fpath = v.type == Type::kString ? path : join_path(path, "file");
+    if (!r_.is_type(*f, Type::kString, fpath)) return;
+    auto tex = std::make_shared<Texture>();
+    int wrap = r_.choice(*t, "wrap", path, {"repeat", "clamp", "clamp_to_edge"});
+    if (wrap >= 0) tex->wrap_s = tex->wrap_t = TextureWrap(wrap);
+    int filter = r_.choice(*t, "filter", path, {"nearest", "linear", "bilinear_mipmap", "trilinear"});
+    const TextureFilter filters[] = {TextureFilter::kNearest, TextureFilter::kLinear,
+                                     TextureFilter::kLinearMipmapNearest, TextureFilter::kLinearMipmapLinear};
+    tex->min_filter = filter >= 0 ? filters[filter] : TextureFilter::kLinearMipmapLinear;
+    tex->mag_filter = filter == 0 ? TextureFilter::kNearest : TextureFilter::kLinear;
+    int env = r_.choice(*t, "env", path, {"modulate", "replace", "decal", "blend"});
+    if (env >= 0) o.texture_env = TextureEnvMode(env);
+    std::string full = (std::filesystem::path(base_dir_) / f->text).string();
+    std::string key = full + "|" + std::to_string(wrap) + "|" + std::to_string(filter);
+    if (auto it = textures_.find(key); it != textures_.end()) {
+      o.texture = it->second;
+      return;
+    }
+    Image img;
+    std::string error;
+    if (!read_image(full, img, &error)) {
+      r_.error(*f, fpath, error);
+      return;
+    }
+    if (img.width > 8192 || img.height > 8192) {
+      r_.error(*f, fpath, "texture is " + std::to_string(img.width) + "x" + std::to_string(img.height) +
+                              ", more than the limit of 8192x8192");
+      return;
+    }
+    // Image rows run top down; texture row 0 is t = 0, the bottom of the picture.
+    TextureLevel level{img.width, img.height, {}};
+    for (int y = img.height - 1; y >= 0; --y) {
+      level.rgba.insert(level.rgba.end(), img.pixel(0, y), img.pixel(0, y) + std::size_t(img.width) * 4);
+    }
+    tex->levels.push_back(std::move(level));
+    generate_mipmaps(*tex);
+    o.texture = textures_[key] = std::move(tex);
   }
 
   bool count(const JsonValue& at, const std::string& path, long long triangles) {
