@@ -47,6 +47,8 @@ Scene sphere_scene(const Material& m, int size) {
   o.mesh = std::make_shared<Mesh>(make_sphere({1.0f, 64, 32}));
   o.front = m;
   o.shading = ShadingMode::kPhong;
+  // As a scene file's "blend": "auto": a translucent material is blended over the background.
+  if (m.diffuse.a < 1.0f) o.blend = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
   s.objects.push_back(o);
   return s;
 }
