@@ -79,6 +79,17 @@ struct SceneObject {
   glm::vec2 texture_repeat{1.0f};  ///< texture coordinates are multiplied by this (tiling)
 };
 
+/// A planar projected shadow (SPEC section 6): every object but the receiver is flattened onto
+/// `plane` from light `light`, drawn unlit in `color`, only on the receiver's pixels (stencil),
+/// each pixel darkened once, pulled in front of the plane by a polygon offset. Lights on the
+/// plane's negative side (below it) cast nothing: the receiver's upper side is unlit.
+struct PlanarShadow {
+  glm::vec4 plane{0.0f, 1.0f, 0.0f, 0.0f};  ///< a x + b y + c z + d = 0, world space
+  int light = 0;
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 0.5f};
+  std::string receiver;  ///< name of the object the shadow falls on
+};
+
 struct Scene {
   std::string caption;  ///< free text describing the scene (shown by the gallery)
   int width = 640;
@@ -91,6 +102,7 @@ struct Scene {
   LightModel light_model;
   std::vector<SceneLight> lights;
   std::vector<SceneObject> objects;
+  std::vector<PlanarShadow> shadows;
 };
 
 }  // namespace shadelab

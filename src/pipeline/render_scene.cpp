@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "shadelab/render.hpp"
+#include "shadelab/shadow.hpp"
 
 namespace shadelab {
 
@@ -71,37 +72,105 @@ std::vector<const SceneObject*> draw_order(const Scene& scene, const glm::mat4& 
   return opaque;
 }
 
+// One draw of an object: its model matrix and fragment state, and for shadows the single
+// unlit colour that replaces its material, vertex colours and texture.
+struct ObjectPass {
+  glm::mat4 model;
+  FragmentState frag;
+  std::optional<glm::vec4> shadow_color;
+};
+
+FragmentState object_state(const SceneObject& obj) {
+  FragmentState frag;
+  frag.blend = obj.blend;
+  // Blended objects show both faces (SPEC section 5), whatever their cull setting.
+  frag.cull = obj.blend.enabled ? CullMode::kNone : obj.cull;
+  return frag;
+}
+
 void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
                  const glm::mat4& view, const glm::mat4& projection,
                  std::span<const Light> lights, const RenderOptions& options,
-                 RenderStats* stats) {
+                 const ObjectPass& pass, RenderStats* stats) {
   if (!obj.mesh) return;
-  EyeMesh eye = to_eye_space(*obj.mesh, view * obj.model);
+  EyeMesh eye = to_eye_space(*obj.mesh, view * pass.model);
+  bool shadow = pass.shadow_color.has_value();
   ShadeState shade;
-  shade.lighting = obj.lighting;
+  shade.lighting = obj.lighting && !shadow;
   shade.shading = options.shading.value_or(obj.shading);
   shade.model = scene.light_model;
   shade.lights = lights;
   shade.front = obj.front;
   shade.back = obj.back.value_or(obj.front);
-  shade.texture = obj.texture.get();
+  shade.texture = shadow ? nullptr : obj.texture.get();
   shade.texture_env = obj.texture_env;
-  FragmentState frag;
-  frag.blend = obj.blend;
-  // Blended objects show both faces (SPEC section 5), whatever their cull setting.
-  frag.cull = obj.blend.enabled ? CullMode::kNone : obj.cull;
   VertexInput in;
   in.positions = eye.positions;
   in.normals = eye.normals;
-  in.colors = obj.mesh->colors;
-  if (obj.texture) {
+  if (!shadow) in.colors = obj.mesh->colors;
+  if (shade.texture) {
     for (const glm::vec2& t : obj.mesh->texcoords) eye.texcoords.push_back(t * obj.texture_repeat);
     in.texcoords = eye.texcoords;
   }
-  in.constant_color = obj.color;
+  in.constant_color = shadow ? *pass.shadow_color : obj.color;
   in.triangles = obj.mesh->triangles;
   Viewport vp{0, 0, fb.width, fb.height, 0.0f, 1.0f};
-  draw_triangles(fb, projection, vp, frag, shade, in, stats);
+  draw_triangles(fb, projection, vp, pass.frag, shade, in, stats);
+}
+
+// The stencil value marking a shadow's receiver: 1 + the index of the first shadow naming it.
+std::uint8_t receiver_mark(const Scene& scene, const SceneObject& obj) {
+  for (std::size_t i = 0; i < scene.shadows.size(); ++i) {
+    if (scene.shadows[i].receiver == obj.name) return static_cast<std::uint8_t>(i + 1);
+  }
+  return 0;
+}
+
+// The projection that flattens world space onto the shadow's plane from its light, or nothing
+// when the light is below the plane (the receiver's upper side is then unlit).
+std::optional<glm::mat4> shadow_matrix(const Scene& scene, const PlanarShadow& sh, const glm::mat4& view) {
+  if (sh.light < 0 || std::size_t(sh.light) >= scene.lights.size()) return std::nullopt;
+  const SceneLight& sl = scene.lights[std::size_t(sh.light)];
+  glm::vec4 pos = sl.eye_space ? glm::inverse(view) * sl.light.position : sl.light.position;
+  glm::vec3 n(sh.plane);
+  if (pos.w == 0.0f) {
+    glm::vec3 dir(pos);
+    if (glm::dot(n, dir) <= 0.0f) return std::nullopt;
+    return directional_light_shadow(dir, sh.plane);
+  }
+  glm::vec3 l = glm::vec3(pos) / pos.w;
+  if (glm::dot(n, l) + sh.plane.w <= 0.0f) return std::nullopt;
+  return point_light_shadow(l, sh.plane);
+}
+
+// Every object but the receiver, flattened onto the plane, only where the receiver's mark is
+// in the stencil; the mark is cleared as the shadow is drawn, so overlapping shadow triangles
+// darken a pixel once. The polygon offset pulls the shadow in front of the receiving plane.
+void draw_shadow(Framebuffer& fb, const Scene& scene, std::size_t index, const glm::mat4& view,
+                 const glm::mat4& projection, std::span<const Light> lights,
+                 const RenderOptions& options, RenderStats* stats) {
+  const PlanarShadow& sh = scene.shadows[index];
+  std::optional<glm::mat4> m = shadow_matrix(scene, sh, view);
+  if (!m) return;
+  std::uint8_t mark = 0;
+  for (const SceneObject& o : scene.objects) {
+    if (o.name == sh.receiver) mark = receiver_mark(scene, o);
+  }
+  ObjectPass pass;
+  pass.shadow_color = sh.color;
+  pass.frag.depth_func = CompareFunc::kLequal;
+  pass.frag.depth_write = false;
+  pass.frag.polygon_offset = true;
+  pass.frag.offset_factor = -1.0f;
+  pass.frag.offset_units = -4.0f;
+  pass.frag.blend = {sh.color.a < 1.0f, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
+  pass.frag.stencil = {true, CompareFunc::kEqual, mark, 0xff, 0xff,
+                       StencilOp::kKeep, StencilOp::kKeep, StencilOp::kZero};
+  for (const SceneObject& o : scene.objects) {
+    if (o.name == sh.receiver) continue;
+    pass.model = *m * o.model;
+    draw_object(fb, scene, o, view, projection, lights, options, pass, stats);
+  }
 }
 
 // Averages each n x n block of `big` into one pixel (ordered-grid supersampling resolve).
@@ -142,8 +211,23 @@ Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats
   glm::mat4 projection =
       scene.camera.projection_matrix(float(scene.width) / float(std::max(scene.height, 1)));
   std::vector<Light> lights = lights_in_eye_space(scene, view);
+  fb.clear_stencil(0);
+  bool shadows_drawn = false;
   for (const SceneObject* obj : draw_order(scene, view)) {
-    draw_object(fb, scene, *obj, view, projection, lights, options, stats);
+    // Shadows go on the opaque picture, before anything blended is drawn over it.
+    if (obj->blend.enabled && !shadows_drawn) {
+      for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
+      shadows_drawn = true;
+    }
+    ObjectPass pass{obj->model, object_state(*obj), std::nullopt};
+    if (std::uint8_t mark = receiver_mark(scene, *obj)) {
+      pass.frag.stencil = {true, CompareFunc::kAlways, mark, 0xff, 0xff,
+                           StencilOp::kKeep, StencilOp::kKeep, StencilOp::kReplace};
+    }
+    draw_object(fb, scene, *obj, view, projection, lights, options, pass, stats);
+  }
+  if (!shadows_drawn) {
+    for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
   }
   Image image = fb.to_image();
   if (n > 1) {

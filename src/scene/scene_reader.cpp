@@ -36,7 +36,7 @@ class SceneReader {
       : r_(d), diags_(d), base_dir_(std::move(base_dir)), options_(o) {}
 
   void read(const JsonValue& root, Scene& s) {
-    if (!r_.object(root, "", {"caption", "image", "camera", "light_model", "lights", "materials", "objects"})) return;
+    if (!r_.object(root, "", {"caption", "image", "camera", "light_model", "lights", "materials", "objects", "shadows"})) return;
     if (const JsonValue* c = root.find("caption"); c && r_.is_type(*c, Type::kString, "caption")) s.caption = c->text;
     if (const JsonValue* v = root.find("image")) image(*v, s);
     if (const JsonValue* v = root.find("camera")) camera(*v, s.camera);
@@ -44,6 +44,7 @@ class SceneReader {
     if (const JsonValue* v = root.find("lights")) lights(*v, s);
     if (const JsonValue* v = root.find("materials")) materials(*v);
     if (const JsonValue* v = root.find("objects")) objects(*v, s);
+    if (const JsonValue* v = root.find("shadows")) shadows(*v, s);
   }
 
  private:
@@ -326,6 +327,38 @@ class SceneReader {
     tex->levels.push_back(std::move(level));
     generate_mipmaps(*tex);
     o.texture = textures_[key] = std::move(tex);
+  }
+
+  void shadows(const JsonValue& v, Scene& s) {
+    if (!r_.is_type(v, Type::kArray, "shadows")) return;
+    std::vector<std::string> names;
+    for (const SceneObject& o : s.objects) names.push_back(o.name);
+    for (std::size_t i = 0; i < v.items.size() && i < 255; ++i) {
+      const JsonValue& e = v.items[i];
+      std::string path = index_path("shadows", i);
+      if (!r_.object(e, path, {"plane", "light", "color", "receiver"})) continue;
+      PlanarShadow sh;
+      r_.vec4(e, "plane", path, sh.plane);
+      if (const JsonValue* p = e.find("plane"); p && glm::length(glm::vec3(sh.plane)) == 0.0f) {
+        r_.error(*p, join_path(path, "plane"), "(a, b, c) must not be the zero vector");
+      }
+      r_.integer(e, "light", path, sh.light, 0, std::max(0, int(s.lights.size()) - 1));
+      if (s.lights.empty()) r_.error(e, path, "a shadow needs a light, and the scene has none");
+      r_.color(e, "color", path, sh.color, 0, 1);
+      const JsonValue* rec = e.find("receiver");
+      if (!rec) {
+        r_.error(e, path, "missing required key \"receiver\"");
+      } else if (r_.is_type(*rec, Type::kString, join_path(path, "receiver"))) {
+        sh.receiver = rec->text;
+        if (std::find(names.begin(), names.end(), rec->text) == names.end()) {
+          std::string near = nearest_match(rec->text, names);
+          r_.error(*rec, join_path(path, "receiver"), "no object named \"" + rec->text + "\"" +
+                                                          (near.empty() ? "" : " (did you mean \"" + near + "\"?)"));
+        }
+      }
+      s.shadows.push_back(sh);
+    }
+    if (v.items.size() > 255) r_.error(v, "shadows", "at most 255 shadows");
   }
 
   bool count(const JsonValue& at, const std::string& path, long long triangles) {
