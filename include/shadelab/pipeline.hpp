@@ -55,6 +55,24 @@ struct StencilState {
   StencilOp fail = StencilOp::kKeep, depth_fail = StencilOp::kKeep, pass = StencilOp::kKeep;
 };
 
+/// Order-independent transparency: instead of blending, fragments that pass the depth test are
+/// kept per pixel and composited later in true depth order (resolve_fragments).
+struct FragmentCapture {
+  struct Entry {
+    float depth;
+    glm::vec4 color;  ///< unclamped shaded colour with alpha
+    BlendState blend;
+  };
+  std::vector<std::vector<Entry>> pixels;  ///< one list per pixel, sized by the caller
+  std::size_t count = 0;
+  std::size_t limit = 64u << 20;  ///< entries kept at most (memory bound)
+  std::size_t dropped = 0;        ///< entries over the limit (the farthest are not kept)
+};
+
+/// Sorts every pixel's captured fragments far to near and blends them over the framebuffer with
+/// each fragment's own blend state, then empties the capture.
+void resolve_fragments(Framebuffer& fb, FragmentCapture& capture);
+
 /// Per-fragment state for one draw.
 struct FragmentState {
   CullMode cull = CullMode::kNone;
@@ -67,6 +85,9 @@ struct FragmentState {
   StencilState stencil;
   bool polygon_offset = false;  ///< glPolygonOffset for filled polygons
   float offset_factor = 0.0f, offset_units = 0.0f;
+  /// When set, fragments passing the depth test are captured (with `blend`) instead of being
+  /// written; depth is not written. For exact transparency.
+  FragmentCapture* capture = nullptr;
 };
 
 /// How colours are made. With `lighting` the pipeline lights vertices or pixels (by `shading`)

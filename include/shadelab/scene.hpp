@@ -103,6 +103,10 @@ struct Scene {
   std::vector<SceneLight> lights;
   std::vector<SceneObject> objects;
   std::vector<PlanarShadow> shadows;
+  /// How blended objects are ordered: kSorted = whole objects back to front (the lecture's
+  /// method); kExact = every fragment sorted by depth per pixel, so intersecting and
+  /// interleaved transparent surfaces blend in true order.
+  enum class Transparency { kSorted, kExact } transparency = Transparency::kSorted;
 };
 
 }  // namespace shadelab

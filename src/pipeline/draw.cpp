@@ -186,6 +186,16 @@ void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
       ++ctx.stats->fragments;
       float z = std::clamp(f.z + offset, 0.0f, 1.0f);
       if (!depth_stencil_test(fb, px, z, *ctx.fragment)) return;
+      if (FragmentCapture* cap = ctx.fragment->capture) {
+        if (cap->count >= cap->limit) {
+          ++cap->dropped;
+          return;
+        }
+        cap->pixels[px].push_back({z, shade_fragment(*ctx.shade, f, front), ctx.fragment->blend});
+        ++cap->count;
+        ++ctx.stats->pixels_shaded;
+        return;
+      }
       write_color(fb, px, shade_fragment(*ctx.shade, f, front), *ctx.fragment);
       ++ctx.stats->pixels_shaded;
     };

@@ -98,3 +98,22 @@ void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentSt
 }
 
 }  // namespace shadelab::detail
+
+namespace shadelab {
+
+void resolve_fragments(Framebuffer& fb, FragmentCapture& capture) {
+  FragmentState state;
+  for (std::size_t i = 0; i < capture.pixels.size(); ++i) {
+    auto& list = capture.pixels[i];
+    // Far to near; equal depths keep their drawing order.
+    std::stable_sort(list.begin(), list.end(), [](const auto& a, const auto& b) { return a.depth > b.depth; });
+    for (const FragmentCapture::Entry& e : list) {
+      state.blend = e.blend;
+      detail::write_color(fb, i, e.color, state);
+    }
+    list.clear();
+  }
+  capture.count = 0;
+}
+
+}  // namespace shadelab

@@ -212,23 +212,31 @@ Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats
       scene.camera.projection_matrix(float(scene.width) / float(std::max(scene.height, 1)));
   std::vector<Light> lights = lights_in_eye_space(scene, view);
   fb.clear_stencil(0);
+  bool exact = scene.transparency == Scene::Transparency::kExact;
+  FragmentCapture capture;
   bool shadows_drawn = false;
   for (const SceneObject* obj : draw_order(scene, view)) {
     // Shadows go on the opaque picture, before anything blended is drawn over it.
     if (obj->blend.enabled && !shadows_drawn) {
       for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
       shadows_drawn = true;
+      if (exact) capture.pixels.resize(std::size_t(fb.width) * std::size_t(fb.height));
     }
     ObjectPass pass{obj->model, object_state(*obj), std::nullopt};
     if (std::uint8_t mark = receiver_mark(scene, *obj)) {
       pass.frag.stencil = {true, CompareFunc::kAlways, mark, 0xff, 0xff,
                            StencilOp::kKeep, StencilOp::kKeep, StencilOp::kReplace};
     }
+    if (exact && obj->blend.enabled) {
+      pass.frag.capture = &capture;  // tested against the opaque depth, composited below
+      pass.frag.depth_write = false;
+    }
     draw_object(fb, scene, *obj, view, projection, lights, options, pass, stats);
   }
   if (!shadows_drawn) {
     for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
   }
+  if (exact) resolve_fragments(fb, capture);
   Image image = fb.to_image();
   if (n > 1) {
     auto t = std::chrono::steady_clock::now();

@@ -36,7 +36,10 @@ class SceneReader {
       : r_(d), diags_(d), base_dir_(std::move(base_dir)), options_(o) {}
 
   void read(const JsonValue& root, Scene& s) {
-    if (!r_.object(root, "", {"caption", "image", "camera", "light_model", "lights", "materials", "objects", "shadows"})) return;
+    if (!r_.object(root, "", {"caption", "image", "camera", "light_model", "lights", "materials", "objects", "shadows", "transparency"})) return;
+    if (int t = r_.choice(root, "transparency", "", {"sorted", "exact"}); t >= 0) {
+      s.transparency = Scene::Transparency(t);
+    }
     if (const JsonValue* c = root.find("caption"); c && r_.is_type(*c, Type::kString, "caption")) s.caption = c->text;
     if (const JsonValue* v = root.find("image")) image(*v, s);
     if (const JsonValue* v = root.find("camera")) camera(*v, s.camera);
