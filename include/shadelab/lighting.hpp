@@ -45,6 +45,9 @@ struct LightingBreakdown {
 struct LightingInput {
   glm::vec3 position{0.0f};  ///< eye-space point
   glm::vec3 normal{0.0f, 0.0f, 1.0f};  ///< eye-space normal, unit length (caller normalizes)
+  /// Optional per-light visibility in [0, 1] (shadow maps), one per light: it scales that
+  /// light's diffuse and specular terms; a fully shadowed point keeps the light's ambient.
+  const float* visibility = nullptr;
 };
 
 /// The lighting equation at one point. `lights` are in eye space; disabled ones are skipped.

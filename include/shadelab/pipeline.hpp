@@ -90,6 +90,25 @@ struct FragmentState {
   FragmentCapture* capture = nullptr;
 };
 
+/// A depth map seen from one light (shadow mapping): one face for directional and spot lights,
+/// six (a cube) for point lights. Built by render_scene; looked up during lighting.
+struct ShadowMap {
+  struct Face {
+    glm::mat4 eye_to_clip{1.0f};  ///< camera eye space -> the light's clip space
+    std::vector<float> depth;     ///< size x size window depths, row 0 at the bottom
+  };
+  int size = 0;                    ///< 0: this light casts no shadow
+  std::vector<Face> faces;
+  bool perspective = false;
+  glm::vec3 light_eye{0.0f};       ///< light position in eye space (perspective maps)
+  float texel_at_unit = 0.0f;      ///< world size of a texel at distance 1 (or everywhere, ortho)
+  float bias = -1.0f;              ///< depth bias; < 0: automatic (normal offset, slope-scaled)
+  int pcf = 1;                     ///< filter radius: (2 pcf + 1)^2 depth comparisons
+
+  /// Fraction of the light reaching eye-space point `p` with unit normal `n` (0 in shadow).
+  float visibility(const glm::vec3& p, const glm::vec3& n) const;
+};
+
 /// How colours are made. With `lighting` the pipeline lights vertices or pixels (by `shading`)
 /// with the one lighting function; without it, vertex colours are used as given.
 struct ShadeState {
@@ -103,6 +122,8 @@ struct ShadeState {
   /// secondary colour is added. Needs texcoords in the vertex input.
   const Texture* texture = nullptr;
   TextureEnvMode texture_env = TextureEnvMode::kModulate;
+  /// Shadow maps by light index (empty, or as long as `lights`; size 0 = unshadowed light).
+  std::span<const ShadowMap> shadow_maps;
 };
 
 /// Vertices in eye space and the triangles over them.

@@ -61,6 +61,10 @@ struct Camera {
 struct SceneLight {
   Light light;
   bool eye_space = false;  ///< false: world space (moved by the camera), true: eye space
+  bool shadow = false;     ///< cast shadow-mapped shadows
+  float shadow_bias = -1;  ///< depth bias; < 0: automatic (normal offset)
+  int shadow_map_size = 1024;
+  int shadow_pcf = 1;      ///< percentage-closer filter radius: (2 r + 1)^2 samples
 };
 
 struct SceneObject {

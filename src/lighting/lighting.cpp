@@ -64,7 +64,7 @@ float specular_factor(const Material& m, const glm::vec3& n, const glm::vec3& l,
 
 // One light's term, with attenuation and spot applied (GL 1.5 eq. 2.4, inside the sum).
 LightTerm light_term(int index, const Light& light, const Material& m, const glm::vec3& p,
-                     const glm::vec3& n, const glm::vec3& v) {
+                     const glm::vec3& n, const glm::vec3& v, float visibility) {
   LightTerm t;
   t.light = index;
   glm::vec3 to_light;
@@ -84,7 +84,8 @@ LightTerm light_term(int index, const Light& light, const Material& m, const glm
   float scale = t.attenuation * t.spot;
   t.n_dot_l = glm::dot(n, to_light);
   t.ambient = scale * rgb(m.ambient) * rgb(light.ambient);
-  if (t.n_dot_l > 0.0f) {
+  if (t.n_dot_l > 0.0f && visibility > 0.0f) {
+    scale *= visibility;  // shadowed: only the ambient term stays
     float diffuse = m.diffuse_model == DiffuseModel::kOrenNayar
                         ? oren_nayar(m.roughness, n, to_light, v, t.n_dot_l)
                         : t.n_dot_l;
@@ -108,7 +109,8 @@ LitColor evaluate(const LightModel& model, std::span<const Light> lights, const 
   glm::vec3 primary = emission + global_ambient, specular(0.0f);
   for (std::size_t i = 0; i < lights.size(); ++i) {
     if (!lights[i].enabled) continue;
-    LightTerm t = light_term(static_cast<int>(i), lights[i], m, in.position, in.normal, v);
+    float visible = in.visibility ? in.visibility[i] : 1.0f;
+    LightTerm t = light_term(static_cast<int>(i), lights[i], m, in.position, in.normal, v, visible);
     primary += t.ambient + t.diffuse;
     specular += t.specular;
     if (breakdown) breakdown->lights.push_back(t);

@@ -31,6 +31,17 @@ glm::vec4 get4(const Attribs& a, int slot) {
 }
 glm::vec3 get3(const Attribs& a, int slot) { return {a[slot], a[slot + 1], a[slot + 2]}; }
 
+// How much of each light reaches eye-space point p (empty when no light has a shadow map).
+std::vector<float> shadow_visibility(const ShadeState& shade, const glm::vec3& p, const glm::vec3& n) {
+  std::vector<float> v;
+  if (shade.shadow_maps.empty()) return v;
+  v.resize(shade.lights.size(), 1.0f);
+  for (std::size_t i = 0; i < v.size() && i < shade.shadow_maps.size(); ++i) {
+    v[i] = shade.shadow_maps[i].visibility(p, n);
+  }
+  return v;
+}
+
 // Colours of one vertex: lit (flat and Gouraud) or given (lighting off). Back slots hold the
 // back-face colours, equal to the front ones when there are none.
 void vertex_colors(const ShadeState& shade, const VertexInput& in, std::size_t i,
@@ -38,8 +49,10 @@ void vertex_colors(const ShadeState& shade, const VertexInput& in, std::size_t i
   glm::vec3 pos(in.positions[i]);
   glm::vec3 n = in.normals.empty() ? glm::vec3(0, 0, 1) : in.normals[i];
   if (shade.lighting && shade.shading != ShadingMode::kPhong) {
-    LitColor f = light_point(shade.model, shade.lights, shade.front, {pos, n});
-    LitColor b = shade.model.two_side ? light_point(shade.model, shade.lights, shade.back, {pos, -n}) : f;
+    std::vector<float> visible = shadow_visibility(shade, pos, n);
+    const float* vis = visible.empty() ? nullptr : visible.data();
+    LitColor f = light_point(shade.model, shade.lights, shade.front, {pos, n, vis});
+    LitColor b = shade.model.two_side ? light_point(shade.model, shade.lights, shade.back, {pos, -n, vis}) : f;
     put(a, kFrontColor, f.primary);
     put(a, kFrontSecondary, f.secondary);
     put(a, kBackColor, b.primary);
@@ -131,8 +144,10 @@ glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front)
     float len = glm::length(n);
     n = len > 0.0f ? n / len : glm::vec3(0, 0, 1);
     bool back = !front && shade.model.two_side;
+    glm::vec3 p = get3(a, kEyePosition), side_n = back ? -n : n;
+    std::vector<float> visible = shadow_visibility(shade, p, front ? n : -n);
     lit = light_point(shade.model, shade.lights, back ? shade.back : shade.front,
-                      {get3(a, kEyePosition), back ? -n : n});
+                      {p, side_n, visible.empty() ? nullptr : visible.data()});
   } else {
     lit.primary = get4(a, front ? kFrontColor : kBackColor);
     lit.secondary = get3(a, front ? kFrontSecondary : kBackSecondary);

@@ -8,6 +8,7 @@
 #include <glm/matrix.hpp>
 
 #include "shadelab/render.hpp"
+#include "pipeline/shadow_maps.hpp"
 #include "shadelab/shadow.hpp"
 
 namespace shadelab {
@@ -91,7 +92,8 @@ FragmentState object_state(const SceneObject& obj) {
 void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
                  const glm::mat4& view, const glm::mat4& projection,
                  std::span<const Light> lights, const RenderOptions& options,
-                 const ObjectPass& pass, RenderStats* stats) {
+                 const ObjectPass& pass, RenderStats* stats,
+                 std::span<const ShadowMap> shadow_maps = {}) {
   if (!obj.mesh) return;
   EyeMesh eye = to_eye_space(*obj.mesh, view * pass.model);
   bool shadow = pass.shadow_color.has_value();
@@ -103,6 +105,7 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   shade.front = obj.front;
   shade.back = obj.back.value_or(obj.front);
   shade.texture = shadow ? nullptr : obj.texture.get();
+  shade.shadow_maps = shadow_maps;
   shade.texture_env = obj.texture_env;
   VertexInput in;
   in.positions = eye.positions;
@@ -211,6 +214,7 @@ Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats
   glm::mat4 projection =
       scene.camera.projection_matrix(float(scene.width) / float(std::max(scene.height, 1)));
   std::vector<Light> lights = lights_in_eye_space(scene, view);
+  std::vector<ShadowMap> shadow_maps = detail::build_shadow_maps(scene, view);
   fb.clear_stencil(0);
   bool exact = scene.transparency == Scene::Transparency::kExact;
   FragmentCapture capture;
@@ -231,7 +235,7 @@ Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats
       pass.frag.capture = &capture;  // tested against the opaque depth, composited below
       pass.frag.depth_write = false;
     }
-    draw_object(fb, scene, *obj, view, projection, lights, options, pass, stats);
+    draw_object(fb, scene, *obj, view, projection, lights, options, pass, stats, shadow_maps);
   }
   if (!shadows_drawn) {
     for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);

@@ -125,7 +125,12 @@ class SceneReader {
     SceneLight sl;
     sl.light = default_light(index);
     Light& l = sl.light;
-    if (!r_.object(v, path, {"position", "ambient", "diffuse", "specular", "attenuation", "spot", "enabled", "space"})) return sl;
+    if (!r_.object(v, path, {"position", "ambient", "diffuse", "specular", "attenuation", "spot", "enabled", "space",
+                             "shadow", "shadow_bias", "shadow_map_size", "shadow_pcf"})) return sl;
+    r_.boolean(v, "shadow", path, sl.shadow);
+    r_.number(v, "shadow_bias", path, sl.shadow_bias, 0, 1, "(0..1, in window depth units)");
+    r_.integer(v, "shadow_map_size", path, sl.shadow_map_size, 16, 8192);
+    r_.integer(v, "shadow_pcf", path, sl.shadow_pcf, 0, 4);
     r_.vec4(v, "position", path, l.position);
     r_.color(v, "ambient", path, l.ambient, -1e6, 1e6);
     r_.color(v, "diffuse", path, l.diffuse, -1e6, 1e6);

@@ -53,6 +53,14 @@ TEST(Golden, EveryLectureFigure) {
   }
 }
 
+TEST(Golden, ShadowMapsSelfShadowingAndExactTransparency) {
+  // Reviewed by eye: spot and point light shadows of the teapot and the gold ball on the floor
+  // with soft edges and no acne, the spout and handle shadowing the teapot's body, and the two
+  // crossing panes blending in true depth order on both sides of their intersection.
+  Image img = render_file("scenes/shadows-and-glass.json", std::nullopt, 160, 120);
+  EXPECT_EQ(test::compare_golden(img, "shadows_and_glass"), "");
+}
+
 TEST(Golden, ShadingModesDifferOnACoarseMesh) {
   // The difference between the three modes must be visible: on a coarse teapot, each pair of
   // modes differs on a good share of the teapot's pixels.
