@@ -53,16 +53,16 @@ std::string read_text(const fs::path& p) {
 
 bool render_figure(const fs::path& scene, const GalleryArgs& a, std::vector<Entry>& entries,
                    Diagnostics& diags) {
-  LoadResult r = load_scene_file(scene.string());
+  LoadOptions opts;
+  opts.overrides.push_back("image.samples=" + std::to_string(a.samples));  // checked by the reader
+  LoadResult r = load_scene_file(scene.string(), opts);
   if (!r.scene) {
     diags.append(r.diagnostics);
     return false;
   }
   std::string png = scene.stem().string() + ".png";
-  RenderOptions ro;
-  ro.samples = a.samples;
   std::string error;
-  if (!write_png(render_scene(*r.scene, ro), (fs::path(a.outdir) / png).string(), &error)) {
+  if (!write_png(render_scene(*r.scene), (fs::path(a.outdir) / png).string(), &error)) {
     diags.error({}, "", error);
     return false;
   }

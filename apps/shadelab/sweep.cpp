@@ -56,8 +56,17 @@ struct Cell {
   std::string label;
 };
 
-// Checks each key/value alone so an error names the --vary value at fault.
+// Checks the scene with the shared options first (errors against the file or --set), then each
+// key/value alone so an error names the --vary value at fault.
 bool validate(const SweepRequest& r, Diagnostics& diags) {
+  LoadOptions base;
+  base.overrides = r.overrides;
+  if (r.samples) base.overrides.push_back("image.samples=" + std::to_string(*r.samples));
+  LoadResult plain = load_scene_file(r.scene, base);
+  if (!plain.scene) {
+    diags.append(plain.diagnostics);
+    return false;
+  }
   for (const Variation& v : r.vary) {
     for (const std::string& value : v.values) {
       if (v.key == "shading") {
@@ -70,6 +79,7 @@ bool validate(const SweepRequest& r, Diagnostics& diags) {
       LoadOptions opts;
       opts.overrides = r.overrides;
       opts.overrides.push_back(v.key + "=" + value);
+      if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
       LoadResult res = load_scene_file(r.scene, opts);
       if (!res.scene) relabel(res.diagnostics, diags, "--vary");
       if (!diags.empty()) return false;  // one bad key gives the same error for every value
@@ -138,6 +148,8 @@ std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnost
     LoadOptions opts;
     opts.overrides = r.overrides;
     opts.overrides.insert(opts.overrides.end(), c.overrides.begin(), c.overrides.end());
+    // Through the reader, so samples are checked (square numbers, pixel limit) like any value.
+    if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
     LoadResult res = load_scene_file(r.scene, opts);
     if (!res.scene) {
       relabel(res.diagnostics, diags, "--vary");
@@ -145,7 +157,6 @@ std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnost
     }
     RenderOptions ro;
     ro.shading = c.shading ? c.shading : r.shading;
-    ro.samples = r.samples;
     sheet.push_back({render_scene(*res.scene, ro), c.label});
     if (progress) progress(++done, int(cells.size()), c.label);
   }

@@ -3,6 +3,8 @@
 // token starts at the first other character after the previous event.
 #include "scene/json_tree.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <iterator>
@@ -194,7 +196,8 @@ std::vector<std::string> split_path(const std::string& path, bool& ok) {
       if (!cur.empty()) parts.push_back(cur);
       cur.clear();
       std::size_t close = path.find(']', i);
-      ok = close != std::string::npos && close > i + 1 &&
+      // At most 6 digits: indexes beyond that are errors anyway, and stoul must not overflow.
+      ok = close != std::string::npos && close > i + 1 && close - i - 1 <= 6 &&
            path.find_first_not_of("0123456789", i + 1) == close;
       if (ok) parts.push_back(path.substr(i, close - i + 1));
       i = close;

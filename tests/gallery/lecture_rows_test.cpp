@@ -85,6 +85,9 @@ TEST(Sweep, BadKeyOrValueIsStatus2AgainstVary) {
   auto s = test::run_cli("sweep scenes/lecture/10-spot-cutoff.json --vary shading=toon -o x.png");
   EXPECT_EQ(s.exit_status, 2);
   EXPECT_EQ(s.err, "--vary: shading: expected one of \"flat\", \"gouraud\", \"phong\", got \"toon\"\n");
+  auto n = test::run_cli("sweep scenes/lecture/10-spot-cutoff.json --vary 'lights[0].spot.cutoff=50' --samples 5 -o x.png");
+  EXPECT_EQ(n.exit_status, 2);
+  EXPECT_EQ(n.err, "--set: image.samples: expected a square number (1, 4, 9, 16, 25, 36, 49, 64), got 5\n");
   EXPECT_FALSE(std::filesystem::exists(test::output_dir() + "/sweep_bad.png"));
 }
 

@@ -114,6 +114,9 @@ TEST(SceneReader, OverridesSetCreateAppendAndReportAgainstSet) {
             "--set: lights[0].spot.cutoff: 200 is out of range (0..90, or 180)\n");
   EXPECT_EQ(errors("{}", {"lights[3].enabled=false"}),
             "--set: lights: index 3 is beyond the end (0 elements)\n");
+  EXPECT_EQ(errors("{}", {"lights[99999999999999999999].enabled=false"}),
+            "--set: expected KEY.PATH=VALUE (e.g. lights[0].spot.cutoff=30), got "
+            "\"lights[99999999999999999999].enabled=false\"\n");
   EXPECT_EQ(errors("{}", {"no-equals-sign"}),
             "--set: expected KEY.PATH=VALUE (e.g. lights[0].spot.cutoff=30), got \"no-equals-sign\"\n");
 }
