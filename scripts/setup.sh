@@ -12,7 +12,6 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev fonts-dejavu-core
-  libosmesa6-dev
 )
 
 install_packages() {
