@@ -1,27 +1,28 @@
-// Mesh helpers: smooth vertex normals, OpenGL's quad split, and a parametric grid builder
-// that picks each quad's winding so its face agrees with the surface normal.
-#include "geometry/grid.hpp"
+// Mesh helpers: smooth vertex normals, OpenGL's quad split, and the grid builder that the
+// built-in shapes share (geometry/grid.hpp).
+#include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
+
+#include "geometry/grid.hpp"
 
 namespace shadelab {
 
 void compute_smooth_normals(Mesh& mesh) {
-  mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f));
+  const std::size_t n = mesh.positions.size();
+  mesh.normals.assign(n, glm::vec3(0.0f));
   for (const Triangle& t : mesh.triangles) {
-    if (t[0] >= mesh.positions.size() || t[1] >= mesh.positions.size() ||
-        t[2] >= mesh.positions.size()) {
-      continue;
-    }
-    glm::vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                             mesh.positions[t[2]] - mesh.positions[t[0]]);
-    float len = glm::length(n);
+    if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
+    const auto& p = mesh.positions;
+    glm::vec3 face = glm::cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
+    float len = glm::length(face);
     if (!(len > 0.0f) || !std::isfinite(len)) continue;  // degenerate faces add nothing
-    for (std::uint32_t v : t) mesh.normals[v] += n / len;
+    for (std::uint32_t v : t) mesh.normals[v] += face / len;
   }
-  for (glm::vec3& n : mesh.normals) {
-    float len = glm::length(n);
-    n = (len > 0.0f && std::isfinite(len)) ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+  for (glm::vec3& normal : mesh.normals) {
+    float len = glm::length(normal);
+    normal = (len > 0.0f && std::isfinite(len)) ? normal / len : glm::vec3(0.0f, 0.0f, 1.0f);
   }
 }
 
@@ -32,23 +33,31 @@ void add_quad(Mesh& mesh, std::uint32_t a, std::uint32_t b, std::uint32_t c, std
 
 namespace detail {
 
-void add_grid_quads(Mesh& mesh, std::uint32_t base, int nu, int nv) {
+std::uint32_t add_vertex(Mesh& mesh, const Vertex& v) {
+  mesh.positions.push_back(v.position);
+  mesh.normals.push_back(v.normal);
+  mesh.texcoords.push_back(v.texcoord);
+  return static_cast<std::uint32_t>(mesh.positions.size() - 1);
+}
+
+void add_grid_quads(Mesh& mesh, std::uint32_t base, int nu, int nv, Winding winding) {
   auto at = [&](int i, int j) { return base + std::uint32_t(j * (nu + 1) + i); };
   for (int j = 0; j < nv; ++j) {
     for (int i = 0; i < nu; ++i) {
       std::uint32_t a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-      const auto& p = mesh.positions;
-      const auto& n = mesh.normals;
-      // The diagonals' cross product is the quad's normal, even when two corners coincide.
-      glm::vec3 face = glm::cross(p[c] - p[a], p[d] - p[b]);
-      glm::vec3 smooth = n[a] + n[b] + n[c] + n[d];
-      if (glm::dot(face, smooth) >= 0.0f) {
+      if (winding == Winding::kAlongUV) {
         add_quad(mesh, a, b, c, d);
       } else {
         add_quad(mesh, a, d, c, b);
       }
     }
   }
+}
+
+glm::vec2 unit_circle(int i, int n) {
+  if (n <= 0 || i % n == 0) return {1.0f, 0.0f};
+  double t = 2.0 * std::numbers::pi * double(i % n) / double(n);  // double: cos(pi/2) ~ 6e-17
+  return {float(std::cos(t)), float(std::sin(t))};
 }
 
 }  // namespace detail

@@ -1,42 +1,58 @@
-// JSON read into a tree that remembers where each value and key came from (file, line,
-// column), for error messages; nlohmann-json does the lexing through its SAX interface.
-// Also applies --set overrides to such a tree. Never throws on bad input.
+// JSON read into a small tree that remembers where each value and each key was written (line
+// and column), for error messages. nlohmann-json does the lexing through its SAX interface.
+// Private to the scene reader. Never throws on bad input; bounded in depth, size and count.
 #pragma once
 
-#include <memory>
+#include <cstddef>
 #include <string>
 #include <string_view>
-#include <utility>
 #include <vector>
 
 #include "shadelab/diagnostics.hpp"
 
 namespace shadelab::detail {
 
+/// Limits against hostile input (documented in docs/scene-format.md).
+inline constexpr int kMaxJsonDepth = 64;
+inline constexpr std::size_t kMaxJsonBytes = 16u << 20;  // 16 MiB
+inline constexpr std::size_t kMaxJsonValues = 1u << 18;  // 262,144 values and keys
+
+struct JsonMember;
+
+/// One JSON value. `line` and `column` are 1-based (column in characters); line 0 means the
+/// value came from a --set override rather than from the file.
 struct JsonValue {
   enum class Type { kNull, kBool, kNumber, kString, kArray, kObject };
   Type type = Type::kNull;
   bool boolean = false;
-  double number = 0.0;
-  bool integral = false;  ///< written without fraction or exponent
-  std::string text;       ///< string value, or the number as written
-  std::vector<JsonValue> items;                     ///< array elements
-  std::vector<std::pair<std::string, JsonValue>> members;  ///< object members, in order
-  std::vector<SourceLocation> key_locations;        ///< one per member
-  SourceLocation location;
+  double number = 0.0;  ///< always finite
+  int line = 0;
+  int column = 0;
+  std::string text;                 ///< string value
+  std::vector<JsonValue> items;     ///< array elements
+  std::vector<JsonMember> members;  ///< object members, in file order
 
-  const JsonValue* find(const std::string& key) const;
-  std::string type_name() const;  ///< "a number", "an array", ...
+  const JsonValue* find(std::string_view key) const;
+  JsonValue* find(std::string_view key);
+  std::string type_name() const;  ///< "a number", "an array", "null", ...
 };
 
-/// Parses `text`; on a syntax error (or nesting deeper than 64) adds a diagnostic and returns
-/// false.
+/// An object member; the position is the key's (where "unknown key" errors point).
+struct JsonMember {
+  std::string key;
+  int line = 0;
+  int column = 0;
+  JsonValue value;
+};
+
+/// "a.b" and "a[2]": key paths as they appear in messages.
+std::string join_path(const std::string& path, std::string_view key);
+std::string index_path(const std::string& path, std::size_t index);
+
+/// Parses `text`. On a syntax error (or a duplicate key, nesting deeper than kMaxJsonDepth, a
+/// number too large for a double, too many values) adds diagnostics located in `filename` and
+/// returns false.
 bool parse_json(std::string_view text, const std::string& filename, JsonValue& out,
                 Diagnostics& diags);
-
-/// Applies "key.path[2].x=value" to `root`: the value is JSON, or a bare word taken as a
-/// string; missing objects are created, an index equal to an array's length appends.
-/// Values set this way are located at file "--set".
-bool apply_override(JsonValue& root, const std::string& assignment, Diagnostics& diags);
 
 }  // namespace shadelab::detail

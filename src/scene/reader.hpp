@@ -1,9 +1,11 @@
-// Checked access to a located JSON tree: types, ranges, unknown keys with "did you mean",
-// every problem recorded as file:line:col: key.path: message. Private to the scene reader.
+// Checked access to a located JSON tree: types, ranges, enums and unknown keys with "did you
+// mean", every problem recorded as `file:line:col: key.path: message` and reading going on, so
+// that all problems are found in one pass. Private to the scene reader.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -13,47 +15,78 @@
 
 namespace shadelab::detail {
 
-/// Shortest text that reads back as `x` (120, 2.5, 1e+30).
+/// Magnitudes above this are refused everywhere (they overflow floats in the renderer).
+inline constexpr double kHuge = 1e30;
+/// The largest length (radius, size, distance) a shape or camera accepts.
+inline constexpr double kMaxLength = 1e6;
+
+/// Shortest text that reads back as `x`: 120, 2.5, -0.25, 1e+30, 1e-05.
 std::string format_number(double x);
+/// The same for a float (0.1f prints as 0.1, not as the double nearest to it).
+std::string format_number(float x);
+
+/// An allowed interval, written in messages as "(0..128)", "(0 or more)", "(greater than 0)",
+/// "(greater than 0, at most 1e+06)", "(greater than 0 and less than 180)", "(0..90, or 180)".
+struct Range {
+  double lo = -kHuge;
+  double hi = kHuge;
+  bool lo_open = false;
+  bool hi_open = false;
+  std::optional<double> also;  ///< one more allowed value outside [lo, hi]
+
+  bool contains(double x) const;
+  std::string text() const;
+};
+Range closed(double lo, double hi);              ///< [lo, hi]
+Range at_least(double lo);                       ///< [lo, kHuge]
+Range above(double lo, double hi = kMaxLength);  ///< (lo, hi]
+Range exclusive(double lo, double hi);            ///< (lo, hi)
+
+/// " (did you mean \"x\"?)" when a candidate is close to `word`, else "".
+std::string suggestion(const std::string& word, const std::vector<std::string>& candidates);
 
 class Reader {
  public:
-  explicit Reader(Diagnostics& diags) : diags_(diags) {}
+  Reader(std::string file, Diagnostics& diags) : file_(std::move(file)), diags_(diags) {}
 
-  void error(const JsonValue& at, const std::string& path, const std::string& message) {
-    diags_.error(at.location, path, message);
-  }
-  bool ok() const { return diags_.empty(); }
+  /// The value's location: in the file, or "--set" for overridden values (line 0).
+  SourceLocation where(const JsonValue& v) const { return where(v.line, v.column); }
+  SourceLocation where(int line, int column) const;
+  void error(const JsonValue& at, const std::string& path, std::string message);
+  std::size_t error_count() const { return diags_.size(); }
 
-  /// Is `v` an object whose keys are all in `allowed`? Unknown keys are reported at the key.
+  /// Is `v` an object whose keys are all in `allowed`? Unknown keys are reported at the key
+  /// (and are not fatal: the known ones are still read).
   bool object(const JsonValue& v, const std::string& path, const std::vector<std::string>& allowed);
-  bool is_type(const JsonValue& v, JsonValue::Type t, const std::string& path);
+  bool is_type(const JsonValue& v, JsonValue::Type type, const std::string& path);
 
-  /// Sets `out` from member `key` of `obj` if present and valid ([lo, hi], or `extra`).
-  void number(const JsonValue& obj, const std::string& key, const std::string& path, float& out,
-              double lo, double hi, const std::string& range, std::optional<double> extra = {});
-  /// A number strictly greater than `lo`.
-  void positive(const JsonValue& obj, const std::string& key, const std::string& path, float& out,
-                double lo = 0.0);
-  void integer(const JsonValue& obj, const std::string& key, const std::string& path, int& out,
+  // Each reader below looks up member `key` of `obj` (whose key path is `path`). When it is
+  // present and valid it sets `out` and returns true; when invalid it reports and returns false;
+  // when absent it leaves `out` (the default) and returns false.
+  bool number(const JsonValue& obj, std::string_view key, const std::string& path, float& out,
+              const Range& range);
+  bool integer(const JsonValue& obj, std::string_view key, const std::string& path, int& out,
                int lo, int hi);
-  void boolean(const JsonValue& obj, const std::string& key, const std::string& path, bool& out);
-  /// One of `choices`; returns the index chosen, or -1 (absent or invalid).
-  int choice(const JsonValue& obj, const std::string& key, const std::string& path,
+  bool boolean(const JsonValue& obj, std::string_view key, const std::string& path, bool& out);
+  bool string(const JsonValue& obj, std::string_view key, const std::string& path, std::string& out);
+  /// One of `choices`; returns its index, or -1 when absent or invalid.
+  int choice(const JsonValue& obj, std::string_view key, const std::string& path,
              const std::vector<std::string>& choices);
-  /// An array of exactly n (or n_alt) finite numbers, each in [lo, hi].
+  /// 3 or 4 numbers in `each` (alpha defaults to 1).
+  bool color(const JsonValue& obj, std::string_view key, const std::string& path, glm::vec4& out,
+             const Range& each);
+  bool vec3(const JsonValue& obj, std::string_view key, const std::string& path, glm::vec3& out);
+  bool vec4(const JsonValue& obj, std::string_view key, const std::string& path, glm::vec4& out);
+
+  /// `v` itself: an array of exactly `n` (or `n_alt`) numbers, each in `each`.
   bool numbers(const JsonValue& v, const std::string& path, std::vector<double>& out, int n,
-               int n_alt = -1, double lo = -1e30, double hi = 1e30);
-  void color(const JsonValue& obj, const std::string& key, const std::string& path, glm::vec4& out,
-             double lo, double hi);
-  void vec3(const JsonValue& obj, const std::string& key, const std::string& path, glm::vec3& out);
-  void vec4(const JsonValue& obj, const std::string& key, const std::string& path, glm::vec4& out);
+               int n_alt = -1, const Range& each = {});
+  /// `v` itself: a number in `range`.
+  bool number_value(const JsonValue& v, const std::string& path, double& out, const Range& range);
 
  private:
+  std::string file_;
   Diagnostics& diags_;
 };
-
-std::string join_path(const std::string& path, const std::string& key);
-std::string index_path(const std::string& path, std::size_t i);
 
 }  // namespace shadelab::detail
