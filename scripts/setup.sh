@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
-  libgtest-dev libgmock-dev fonts-dejavu-core
+  libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev
 )
 
 install_packages() {

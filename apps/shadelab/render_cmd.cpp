@@ -21,6 +21,8 @@ struct RenderArgs {
   std::vector<std::string> overrides;
   int samples = 0;
   bool stats = false;
+  bool reference = false;
+  int threads = 0;
 };
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -54,6 +56,8 @@ int run_render(const RenderArgs& args) {
   if (args.shading == "flat") render_options.shading = ShadingMode::kFlat;
   if (args.shading == "gouraud") render_options.shading = ShadingMode::kGouraud;
   if (args.shading == "phong") render_options.shading = ShadingMode::kPhong;
+  render_options.reference = args.reference;
+  render_options.threads = args.threads;
 
   std::string output = args.output;
   if (output.empty()) output = std::filesystem::path(args.scene).stem().string() + ".png";
@@ -93,6 +97,10 @@ Action add_render_command(CLI::App& app) {
                   "Anti-aliasing: samples per pixel, 1, 4, 9, 16 ... 64 (supersampling)")
       ->check(CLI::Range(1, 64));
   cmd->add_flag("--stats", args->stats, "Print triangle and pixel counts and time per stage");
+  cmd->add_flag("--reference", args->reference, "Draw with the simple reference pipeline");
+  cmd->add_option("--threads", args->threads,
+                  "Fast pipeline threads (default: $SHADELAB_THREADS, else all cores)")
+      ->check(CLI::Range(1, 256));
   cmd->footer(
       "Examples:\n"
       "  shadelab render scenes/teapot.json -o teapot.png\n"

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -155,12 +156,32 @@ struct RenderStats {
   double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
 };
 
+/// The fast pipeline's worker threads and reusable buffers (src/fast/, docs/performance.md).
+/// Keep one alive across draws and frames: steady-state drawing then allocates nothing. Not
+/// thread-safe: one draw at a time per context.
+class PipelineContext {
+ public:
+  /// `threads` workers including the caller; 0: $SHADELAB_THREADS if set, else all cores.
+  explicit PipelineContext(int threads = 0);
+  ~PipelineContext();
+  PipelineContext(const PipelineContext&) = delete;
+  PipelineContext& operator=(const PipelineContext&) = delete;
+  int threads() const;
+  struct Impl;
+  Impl& impl() { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
 /// Draws triangles into `fb`: vertex lighting (flat/Gouraud), projection, homogeneous clipping
 /// against the view volume, viewport mapping, rasterization with the top-left fill rule at
 /// pixel centres, depth/stencil tests, per-pixel lighting (Phong), blending. `projection` maps
-/// eye space to clip space.
+/// eye space to clip space. With `fast`, the tiled, multithreaded SIMD pipeline draws instead
+/// of the reference path: the same coverage and depth, colours within 1/255.
 void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
                     const FragmentState& fragment, const ShadeState& shade,
-                    const VertexInput& vertices, RenderStats* stats = nullptr);
+                    const VertexInput& vertices, RenderStats* stats = nullptr,
+                    PipelineContext* fast = nullptr);
 
 }  // namespace shadelab

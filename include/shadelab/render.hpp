@@ -13,6 +13,11 @@ namespace shadelab {
 struct RenderOptions {
   std::optional<ShadingMode> shading;  ///< overrides every object's shading mode
   std::optional<int> samples;          ///< overrides Scene::samples (a square number)
+  bool reference = false;  ///< draw with the reference pipeline instead of the fast one
+  int threads = 0;         ///< fast pipeline threads; 0: $SHADELAB_THREADS, else all cores
+  /// A fast-pipeline context kept across frames (no per-frame thread start or allocation);
+  /// null: render_scene makes one for the frame. Ignored with `reference`.
+  PipelineContext* context = nullptr;
 };
 
 /// Renders `scene` at scene.width x scene.height.

@@ -84,7 +84,9 @@ LightTerm light_term(int index, const Light& light, const Material& m, const glm
   float scale = t.attenuation * t.spot;
   t.n_dot_l = glm::dot(n, to_light);
   t.ambient = scale * rgb(m.ambient) * rgb(light.ambient);
-  if (t.n_dot_l > 0.0f && visibility > 0.0f) {
+  // A light whose attenuation times spot factor is 0 adds nothing more (as Mesa skips it), so
+  // that an overflowing specular power never meets a zero factor (inf * 0).
+  if (t.n_dot_l > 0.0f && visibility > 0.0f && scale > 0.0f) {
     scale *= visibility;  // shadowed: only the ambient term stays
     float diffuse = m.diffuse_model == DiffuseModel::kOrenNayar
                         ? oren_nayar(m.roughness, n, to_light, v, t.n_dot_l)
@@ -96,7 +98,9 @@ LightTerm light_term(int index, const Light& light, const Material& m, const glm
   return t;
 }
 
-glm::vec3 clamp01(const glm::vec3& c) { return glm::clamp(c, glm::vec3(0.0f), glm::vec3(1.0f)); }
+// Clamps to [0, 1]; NaN (from inf - inf with unnormalized normals or huge colours) becomes 0.
+float clamp01(float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; }
+glm::vec3 clamp01(const glm::vec3& c) { return {clamp01(c.x), clamp01(c.y), clamp01(c.z)}; }
 
 // The whole equation. `terms`, when given, receives each enabled light's term.
 LitColor evaluate(const LightModel& model, std::span<const Light> lights, const Material& m,

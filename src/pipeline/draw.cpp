@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "fast/draw_fast.hpp"
 #include "pipeline/fragment_ops.hpp"
 #include "pipeline/stages.hpp"
 #include "shadelab/lighting.hpp"
@@ -112,10 +113,12 @@ double signed_area(const std::vector<WindowVertex>& w) {
   return a;
 }
 
+}  // namespace
+
 // glPolygonOffset: factor * max depth slope + units * r, r the smallest resolvable depth step
 // of a 24-bit depth buffer (GL 1.5 section 3.5.5).
-float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
-                     const FragmentState& f) {
+float detail::polygon_offset(const WindowVertex& a, const WindowVertex& b,
+                             const WindowVertex& c, const FragmentState& f) {
   double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
   double m = 0.0;
   if (det != 0.0) {
@@ -126,6 +129,8 @@ float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowV
   return static_cast<float>(f.offset_factor * m + f.offset_units * (1.0 / 16777216.0));
 }
 
+namespace {
+
 // GL 1.1 section 3.8.5: lambda = log2 of the larger screen-space footprint in texels.
 float texture_lambda(const Texture& t, const Fragment& f) {
   float w = float(t.levels[0].width), h = float(t.levels[0].height);
@@ -134,9 +139,11 @@ float texture_lambda(const Texture& t, const Fragment& f) {
   return rho > 0.0f ? std::log2(rho) : -1000.0f;
 }
 
+}  // namespace
+
 // The colour of one fragment, lit per pixel for Phong, else interpolated or flat; then
 // textured, then the secondary colour added.
-glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front) {
+glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, bool front) {
   const Attribs& a = f.attr;
   LitColor lit;
   if (shade.lighting && shade.shading == ShadingMode::kPhong) {
@@ -161,6 +168,8 @@ glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front)
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing.
   return glm::vec4(glm::vec3(color) + lit.secondary, color.a);
 }
+
+namespace {
 
 struct TriangleContext {
   Framebuffer* fb;
@@ -199,7 +208,8 @@ void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
     auto emit = [&](const Fragment& f) {
       std::size_t px = std::size_t(f.y) * fb.width + f.x;
       ++ctx.stats->fragments;
-      float z = std::clamp(f.z + offset, 0.0f, 1.0f);
+      float z = f.z + offset;
+      z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // clamped, NaN to 0 (as the fast path)
       if (!depth_stencil_test(fb, px, z, *ctx.fragment)) return;
       if (FragmentCapture* cap = ctx.fragment->capture) {
         if (cap->count >= cap->limit) {
@@ -222,7 +232,8 @@ void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
 
 void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
                     const FragmentState& fragment, const ShadeState& shade,
-                    const VertexInput& in, RenderStats* stats_out) {
+                    const VertexInput& in, RenderStats* stats_out, PipelineContext* fast) {
+  if (fast) return detail::draw_triangles_fast(*fast, fb, projection, viewport, fragment, shade, in, stats_out);
   RenderStats local;
   RenderStats& stats = stats_out ? *stats_out : local;
   auto t0 = Clock::now();

@@ -80,8 +80,13 @@ bool depth_stencil_test(Framebuffer& fb, std::size_t i, float z, const FragmentS
   return true;
 }
 
+namespace {
+// Clamps to [0, 1] with NaN to 0 (the fast pipeline's clamp_unit makes the same choice).
+float unit(float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; }
+}  // namespace
+
 void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentState& state) {
-  src = glm::clamp(src, glm::vec4(0.0f), glm::vec4(1.0f));
+  for (int c = 0; c < 4; ++c) src[c] = unit(src[c]);
   std::uint8_t* px = &fb.color[i * 4];
   glm::vec4 out = src;
   if (state.blend.enabled) {
@@ -93,7 +98,7 @@ void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentSt
   }
   for (int c = 0; c < 4; ++c) {
     if (!state.color_mask[c]) continue;
-    px[c] = static_cast<std::uint8_t>(std::lround(std::clamp(out[c], 0.0f, 1.0f) * 255.0f));
+    px[c] = static_cast<std::uint8_t>(std::lround(unit(out[c]) * 255.0f));
   }
 }
 

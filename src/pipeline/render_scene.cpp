@@ -118,7 +118,7 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   in.constant_color = shadow ? *pass.shadow_color : obj.color;
   in.triangles = obj.mesh->triangles;
   Viewport vp{0, 0, fb.width, fb.height, 0.0f, 1.0f};
-  draw_triangles(fb, projection, vp, pass.frag, shade, in, stats);
+  draw_triangles(fb, projection, vp, pass.frag, shade, in, stats, options.context);
 }
 
 // The stencil value marking a shadow's receiver: 1 + the index of the first shadow naming it.
@@ -204,8 +204,12 @@ int grid_size(int samples) {
 
 }  // namespace
 
-Image render_scene(const Scene& scene, const RenderOptions& options, RenderStats* stats) {
+Image render_scene(const Scene& scene, const RenderOptions& requested, RenderStats* stats) {
   auto start = std::chrono::steady_clock::now();
+  RenderOptions options = requested;  // the fast pipeline unless `reference` (src/fast/)
+  std::optional<PipelineContext> own_context;
+  if (options.reference) options.context = nullptr;
+  else if (!options.context) options.context = &own_context.emplace(options.threads);
   int n = grid_size(options.samples.value_or(scene.samples));
   Framebuffer fb;
   fb.resize(scene.width * n, scene.height * n);

@@ -52,6 +52,10 @@ struct Fragment {
   float ds_dx = 0, dt_dx = 0, ds_dy = 0, dt_dy = 0;
 };
 
+/// glPolygonOffset's depth offset for the window-space triangle a, b, c (draw.cpp).
+float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                     const FragmentState& f);
+
 /// Rasterizes one triangle with the top-left fill rule at pixel centres (8 sub-pixel bits),
 /// calling `emit(fragment)` for every covered pixel inside the scissor [0, width) x [0, height).
 /// Triangles with zero area produce nothing. Returns the number of covered pixels.
@@ -60,6 +64,10 @@ template <class Emit>
 std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
                                  const WindowVertex& c, int width, int height, bool texture_lod,
                                  Emit&& emit);
+
+/// The colour of one fragment before the fragment operations (draw.cpp): lit per pixel for
+/// Phong, else its interpolated or flat colour; then textured; then the secondary colour added.
+glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front);
 
 }  // namespace shadelab::detail
 

@@ -253,6 +253,27 @@ TEST(Lighting, OrenNayarAtZeroRoughnessIsLambert) {
   EXPECT_NEAR(rough.primary.r, 0.8f * 0.5f * (1 - 0.5f * 0.25f / 0.58f), 1e-5);
 }
 
+// An unnormalized normal makes the specular power overflow to infinity; a light outside its
+// spot cone must still add nothing (no inf * 0 = NaN), and any NaN left clamps to 0.
+TEST(Lighting, OverflowingSpecularOutsideTheConeAddsNothing) {
+  Material m = bare();
+  m.specular = {0, 1, 1, 1};  // a zero channel meets the infinite power too
+  m.shininess = 128;
+  m.specular_model = SpecularModel::kPhong;
+  Light spot;
+  spot.position = {0, 0, 5, 1};
+  spot.spot_direction = {0, 0, 1};  // pointing away: the vertex is outside the cone
+  spot.spot_cutoff = 30;
+  spot.specular = {1, 1, 1, 1};
+  LitColor c = light_point(dark_model(), std::vector<Light>{spot}, m, {{0, 0, 0}, {0, 0, 40}});
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(c.primary[k], 0.0f) << k;
+  // Inside the cone the same overflow saturates to white where the material reflects.
+  spot.spot_direction = {0, 0, -1};
+  c = light_point(dark_model(), std::vector<Light>{spot}, m, {{0, 0, 0}, {0, 0, 40}});
+  EXPECT_EQ(c.primary.g, 1.0f);
+  EXPECT_FALSE(std::isnan(c.primary.r));
+}
+
 TEST(Lighting, TwoSidedIsTheCallersNegatedNormal) {
   Material m = bare();
   m.diffuse = {1, 1, 1, 1};

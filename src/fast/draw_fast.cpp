@@ -1,0 +1,135 @@
+// One draw through the fast pipeline: plan, vertex stage over blocks of vertices, setup over
+// contiguous triangle chunks (so each tile's bins keep submission order), then the non-empty
+// tiles rasterized by whichever thread is free. Every stage runs on the context's pool.
+#include "fast/draw_fast.hpp"
+
+#include <chrono>
+#include <cstdlib>
+
+#include "fast/context.hpp"
+#include "fast/plan.hpp"
+#include "fast/raster.hpp"
+#include "fast/setup.hpp"
+#include "fast/vertex_stage.hpp"
+
+namespace shadelab {
+
+PipelineContext::PipelineContext(int threads)
+    : impl_(std::make_unique<Impl>(fast::resolve_thread_count(threads))) {}
+
+PipelineContext::~PipelineContext() = default;
+
+int PipelineContext::threads() const { return impl_->pool.size(); }
+
+namespace fast {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+constexpr std::size_t kVertexBlock = 2048;   // vertices per vertex-stage work item
+constexpr std::size_t kParallelSetup = 4096;  // fewer triangles are set up on one thread
+
+// Window coordinates stay within the viewport (up to rounding) after clipping; these bounds
+// keep snapped coordinates in 32 bits and edge functions below 2^53 (exact in doubles).
+bool in_fixed_point_range(const Framebuffer& fb, const Viewport& vp) {
+  constexpr long kMaxSize = 1 << 15, kMaxCoordinate = 1 << 22;
+  return vp.width <= kMaxSize && vp.height <= kMaxSize && fb.width <= kMaxSize &&
+         fb.height <= kMaxSize && std::labs(long(vp.x)) + vp.width <= kMaxCoordinate &&
+         std::labs(long(vp.y)) + vp.height <= kMaxCoordinate;
+}
+
+void vertex_stage(PipelineContext::Impl& impl) {
+  DrawJob& job = impl.job;
+  const std::size_t n = job.in->positions.size();
+  job.vertices.resize(n);
+  job.outcodes.resize(n);
+  job.varyings.resize(n * std::size_t(job.plan.layout.count));
+  int blocks = int((n + kVertexBlock - 1) / kVertexBlock);
+  impl.pool.run(blocks, [&](int b, int worker) {
+    std::size_t begin = std::size_t(b) * kVertexBlock;
+    run_vertex_range(job, begin, std::min(n, begin + kVertexBlock), impl.workers[std::size_t(worker)]);
+  });
+}
+
+void setup_stage(PipelineContext::Impl& impl) {
+  DrawJob& job = impl.job;
+  const std::size_t n = job.in->triangles.size();
+  job.tiles_x = (job.fb->width + kTileSize - 1) / kTileSize;
+  job.tiles_y = (job.fb->height + kTileSize - 1) / kTileSize;
+  const std::size_t tiles = std::size_t(job.tiles_x) * std::size_t(job.tiles_y);
+  job.chunk_count = n >= kParallelSetup ? impl.pool.size() : 1;
+  if (job.chunks.size() < std::size_t(job.chunk_count)) job.chunks.resize(std::size_t(job.chunk_count));
+  impl.pool.run(job.chunk_count, [&](int c, int) {
+    SetupChunk& chunk = job.chunks[std::size_t(c)];
+    reset_chunk(chunk, tiles);
+    setup_range(job, chunk, n * std::size_t(c) / std::size_t(job.chunk_count),
+                n * std::size_t(c + 1) / std::size_t(job.chunk_count));
+  });
+  impl.tiles.clear();
+  for (std::size_t t = 0; t < tiles; ++t) {
+    for (int c = 0; c < job.chunk_count; ++c) {
+      if (!job.chunks[std::size_t(c)].bins[t].empty()) {
+        impl.tiles.push_back(int(t));
+        break;
+      }
+    }
+  }
+}
+
+void add_counts(RenderStats& to, const RenderStats& from) {
+  to.triangles_in += from.triangles_in;
+  to.triangles_culled += from.triangles_culled;
+  to.triangles_clipped += from.triangles_clipped;
+  to.triangles_rasterized += from.triangles_rasterized;
+  to.fragments += from.fragments;
+  to.pixels_shaded += from.pixels_shaded;
+}
+
+}  // namespace
+
+}  // namespace fast
+
+void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
+                                 const glm::mat4& projection, const Viewport& viewport,
+                                 const FragmentState& fragment, const ShadeState& shade,
+                                 const VertexInput& in, RenderStats* stats_out) {
+  if (!fast::in_fixed_point_range(fb, viewport)) {
+    return draw_triangles(fb, projection, viewport, fragment, shade, in, stats_out);
+  }
+  RenderStats local;
+  RenderStats& stats = stats_out ? *stats_out : local;
+  PipelineContext::Impl& impl = context.impl();
+  // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
+  ShadeState effective = shade;
+  if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
+  fast::DrawJob& job = impl.job;
+  job.fb = &fb;
+  job.frag = &fragment;
+  job.shade = &effective;
+  job.in = &in;
+  job.projection = projection;
+  job.viewport = viewport;
+  fast::make_plan(job);
+  for (fast::WorkerScratch& w : impl.workers) w.stats = RenderStats{};
+
+  auto t0 = fast::Clock::now();
+  fast::vertex_stage(impl);
+  if (job.plan.vertex_lighting) stats.vertices_lit += in.positions.size() * (job.plan.two_side ? 2 : 1);
+  stats.ms_vertex += fast::ms_since(t0);
+
+  auto t1 = fast::Clock::now();
+  fast::setup_stage(impl);
+  impl.pool.run(int(impl.tiles.size()), [&](int i, int worker) {
+    fast::raster_tile(job, impl.tiles[std::size_t(i)], impl.workers[std::size_t(worker)]);
+  });
+  for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(stats, job.chunks[std::size_t(c)].stats);
+  for (const fast::WorkerScratch& w : impl.workers) fast::add_counts(stats, w.stats);
+  stats.ms_raster += fast::ms_since(t1);
+  job.shade = nullptr;  // `effective` ends here
+}
+
+}  // namespace shadelab

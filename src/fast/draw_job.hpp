@@ -1,0 +1,108 @@
+// The data the fast pipeline's stages hand to each other for one draw: transformed vertices,
+// the varying layout, per-tile bins of triangles in submission order, and per-thread scratch.
+// Plain data and small helpers only; the stages themselves live in vertex_stage.cpp,
+// setup.cpp and raster.cpp.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "fast/lighting_setup.hpp"
+#include "pipeline/stages.hpp"
+#include "shadelab/pipeline.hpp"
+
+namespace shadelab::fast {
+
+inline constexpr int kTileShift = 6;  ///< 64 x 64 pixel tiles
+inline constexpr int kTileSize = 1 << kTileShift;
+inline constexpr float kMinClipW = 1e-6f;  ///< clip.cpp's w >= epsilon plane
+
+/// A vertex after the viewport transform, as setup and the rasterizer read it. Values are
+/// the reference's to_window results bit for bit; sx, sy are snap()'s.
+struct RasterVertex {
+  double x, y;        ///< window coordinates
+  std::int32_t sx, sy;  ///< snapped to 1/256 pixel
+  float z;            ///< window depth
+  float inv_w;        ///< 1 / w_clip
+};
+
+/// Where each reference attribute slot (stages.hpp Attr) lives among a vertex's varyings;
+/// -1: not carried (zero). Back slots may alias the front ones.
+struct VaryingLayout {
+  int front_color = -1, back_color = -1;          // 4 floats
+  int front_secondary = -1, back_secondary = -1;  // 3 floats
+  int eye_position = -1, eye_normal = -1;         // 3 floats
+  int texcoord = -1;                              // 2 floats
+  int count = 0;                                  // floats per vertex
+};
+
+/// What a draw needs from each stage, decided once per draw (plan.cpp).
+struct DrawPlan {
+  VaryingLayout layout;
+  bool vertex_lighting = false;  ///< flat/Gouraud: light_point at vertices
+  bool simd_vertex_lighting = false;
+  bool phong = false;            ///< lit per pixel
+  bool flat = false;             ///< colours from the provoking vertex
+  bool two_side = false;         ///< back-facing triangles use back colours / material
+  bool scalar_fragments = false; ///< per-fragment reference operations (stencil, capture,
+                                 ///< textures, Phong the SIMD kernel does not cover)
+  bool writes_color = true;      ///< some colour channel is written (or captured)
+  LightingSetup lighting;
+};
+
+/// One fan triangle of a clipped polygon; indices into its setup chunk's clip vertices.
+struct ClippedTriangle {
+  std::uint32_t v[3];
+  std::uint32_t provoking;  ///< the original triangle's last vertex (a main vertex index)
+};
+
+/// Bin entries: a triangle index with these flags.
+inline constexpr std::uint32_t kBinClipped = 1u << 31;  ///< index into ClippedTriangle list
+inline constexpr std::uint32_t kBinFront = 1u << 30;
+inline constexpr std::uint32_t kBinIndexMask = kBinFront - 1;
+
+/// One contiguous range of triangles set up together: its bins keep submission order.
+struct SetupChunk {
+  std::vector<std::vector<std::uint32_t>> bins;  ///< per tile
+  std::vector<RasterVertex> clip_vertices;
+  std::vector<float> clip_varyings;
+  std::vector<ClippedTriangle> clipped;
+  std::vector<detail::ClipVertex> poly, scratch;
+  RenderStats stats;
+};
+
+/// Per-worker scratch (vertex stage and rasterizer).
+struct WorkerScratch {
+  detail::Attribs attribs[3];     ///< full reference attributes (scalar fragments)
+  std::vector<float> visibility;  ///< shadow-map visibility per light (scalar lighting)
+  RenderStats stats;
+};
+
+/// Everything one draw's stages read. Filled by draw_fast.cpp.
+struct DrawJob {
+  Framebuffer* fb = nullptr;
+  const FragmentState* frag = nullptr;
+  const ShadeState* shade = nullptr;  ///< with an incomplete texture already dropped
+  const VertexInput* in = nullptr;
+  glm::mat4 projection{1.0f};
+  Viewport viewport;
+  DrawPlan plan;
+  // Vertex stage output, one entry per input vertex.
+  std::vector<RasterVertex> vertices;
+  std::vector<float> varyings;       ///< layout.count floats per vertex
+  std::vector<std::uint8_t> outcodes;  ///< bit k: outside clip plane k (clip.cpp's order)
+  // Setup output.
+  std::vector<SetupChunk> chunks;
+  int chunk_count = 0;
+  int tiles_x = 0, tiles_y = 0;
+};
+
+/// Expands a vertex's varyings into the reference's attribute slots (absent slots zero).
+void expand_varyings(const VaryingLayout& layout, const float* varyings, detail::Attribs& out);
+
+/// Packs reference attribute slots back into varyings.
+void compact_varyings(const VaryingLayout& layout, const detail::Attribs& attr, float* out);
+
+}  // namespace shadelab::fast

@@ -1,0 +1,192 @@
+// SIMD fragment work for one group of horizontally adjacent pixels of one triangle: depth
+// test, perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
+// blending and the colour write. Each step is the reference's arithmetic lane by lane (double
+// interpolation, float blending, round-half-away conversion), so results match it bitwise
+// except for the powers in lighting. Per-target code (Highway).
+#if defined(SHADELAB_FAST_FRAGMENT_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SHADELAB_FAST_FRAGMENT_INL_H_
+#undef SHADELAB_FAST_FRAGMENT_INL_H_
+#else
+#define SHADELAB_FAST_FRAGMENT_INL_H_
+#endif
+
+#include "fast/lighting-inl.h"
+#include "fast/triangle.hpp"
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace shadelab::fast::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DD = hn::ScalableTag<double>;
+using DF = hn::Rebind<float, DD>;          // one float per double lane
+using DU = hn::Rebind<std::uint32_t, DD>;  // one RGBA8 pixel per lane
+using DI = hn::Rebind<std::int32_t, DD>;
+using VD = hn::Vec<DD>;
+using VF = hn::Vec<DF>;
+using MF = hn::Mask<DF>;
+
+/// Normalized perspective weights of a group (reference_raster.inl's q0, q1, q2).
+struct Weights {
+  VD q0, q1, q2;
+};
+
+HWY_INLINE Weights perspective_weights(const TriSetup& t, VD b0, VD b1, VD b2) {
+  const DD dd;
+  VD q0 = hn::Mul(b0, hn::Set(dd, double(t.v[0]->inv_w)));
+  VD q1 = hn::Mul(b1, hn::Set(dd, double(t.v[1]->inv_w)));
+  VD q2 = hn::Mul(b2, hn::Set(dd, double(t.v[2]->inv_w)));
+  VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
+  return {hn::Mul(q0, inv), hn::Mul(q1, inv), hn::Mul(q2, inv)};
+}
+
+/// Varying `k` at every lane. A value equal at the three vertices is taken as is: the
+/// reference's weighted sum rounds back to it exactly (the weights sum to 1 within 1e-15).
+HWY_INLINE VF varying(const TriSetup& t, const Weights& w, int k) {
+  const DD dd;
+  const DF df;
+  float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
+  if (a0 == a1 && a1 == a2) return hn::Set(df, a0);
+  VD s = hn::Add(hn::Add(hn::Mul(w.q0, hn::Set(dd, double(a0))), hn::Mul(w.q1, hn::Set(dd, double(a1)))),
+                 hn::Mul(w.q2, hn::Set(dd, double(a2))));
+  return hn::DemoteTo(df, s);
+}
+
+struct Rgba {
+  VF c[4];
+};
+
+// Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp).
+HWY_INLINE Rgba vertex_color(const DrawJob& job, const TriSetup& t, const Weights& w) {
+  const DF df;
+  const VaryingLayout& l = job.plan.layout;
+  int color = t.front ? l.front_color : l.back_color;
+  int secondary = t.front ? l.front_secondary : l.back_secondary;
+  Rgba out;
+  for (int c = 0; c < 4; ++c) {
+    out.c[c] = t.flat ? hn::Set(df, t.flat[color + c]) : varying(t, w, color + c);
+  }
+  if (secondary < 0) return out;
+  for (int c = 0; c < 3; ++c) {
+    VF s = t.flat ? hn::Set(df, t.flat[secondary + c]) : varying(t, w, secondary + c);
+    out.c[c] = hn::Add(out.c[c], s);
+  }
+  return out;
+}
+
+// Per-pixel Phong: interpolated eye position and normal, re-normalized, lit.
+HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Weights& w) {
+  const DF df;
+  const VaryingLayout& l = job.plan.layout;
+  LitIn<DF> in;
+  in.p = {varying(t, w, l.eye_position), varying(t, w, l.eye_position + 1),
+          varying(t, w, l.eye_position + 2)};
+  V3<DF> n{varying(t, w, l.eye_normal), varying(t, w, l.eye_normal + 1),
+           varying(t, w, l.eye_normal + 2)};
+  V3<DF> up{hn::Zero(df), hn::Zero(df), hn::Set(df, 1.0f)};
+  n = normalize_or(df, n, up, nullptr);
+  bool back = !t.front && job.plan.two_side;
+  in.n = back ? V3<DF>{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)} : n;
+  const MaterialParams& m = back ? job.plan.lighting.back : job.plan.lighting.front;
+  LitOut<DF> lit = light_lanes(df, job.plan.lighting, m, in);
+  Rgba out{{lit.primary.x, lit.primary.y, lit.primary.z, hn::Set(df, m.alpha)}};
+  if (!job.plan.lighting.separate_specular) return out;
+  out.c[0] = hn::Add(out.c[0], lit.secondary.x);
+  out.c[1] = hn::Add(out.c[1], lit.secondary.y);
+  out.c[2] = hn::Add(out.c[2], lit.secondary.z);
+  return out;
+}
+
+/// fragment_ops.cpp's compare(func, incoming, stored).
+HWY_INLINE MF depth_compare(CompareFunc func, VF z, VF stored) {
+  const DF df;
+  switch (func) {
+    case CompareFunc::kNever: return hn::FirstN(df, 0);
+    case CompareFunc::kLess: return hn::Lt(z, stored);
+    case CompareFunc::kEqual: return hn::Eq(z, stored);
+    case CompareFunc::kLequal: return hn::Le(z, stored);
+    case CompareFunc::kGreater: return hn::Gt(z, stored);
+    case CompareFunc::kNotequal: return hn::Ne(z, stored);
+    case CompareFunc::kGequal: return hn::Ge(z, stored);
+    case CompareFunc::kAlways: break;
+  }
+  return hn::FirstN(df, hn::Lanes(df));
+}
+
+HWY_INLINE VF one_minus(VF v) { return hn::Sub(hn::Set(DF(), 1.0f), v); }
+
+/// fragment_ops.cpp's blend_factor for channel c.
+HWY_INLINE VF blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& dst) {
+  const DF df;
+  switch (f) {
+    case BlendFactor::kZero: return hn::Zero(df);
+    case BlendFactor::kOne: return hn::Set(df, 1.0f);
+    case BlendFactor::kSrcColor: return src.c[c];
+    case BlendFactor::kOneMinusSrcColor: return one_minus(src.c[c]);
+    case BlendFactor::kDstColor: return dst.c[c];
+    case BlendFactor::kOneMinusDstColor: return one_minus(dst.c[c]);
+    case BlendFactor::kSrcAlpha: return src.c[3];
+    case BlendFactor::kOneMinusSrcAlpha: return one_minus(src.c[3]);
+    case BlendFactor::kDstAlpha: return dst.c[3];
+    case BlendFactor::kOneMinusDstAlpha: return one_minus(dst.c[3]);
+    case BlendFactor::kSrcAlphaSaturate: {
+      if (c == 3) return hn::Set(df, 1.0f);
+      VF b = one_minus(dst.c[3]);  // std::min(a, b) = (b < a) ? b : a
+      return hn::IfThenElse(hn::Lt(b, src.c[3]), b, src.c[3]);
+    }
+  }
+  return hn::Set(df, 1.0f);
+}
+
+// fragment_ops.cpp's unit(): v > 0 ? min(v, 1) : 0, so NaN becomes 0.
+HWY_INLINE VF clamp_unit(VF v) {
+  const DF df;
+  VF hi = hn::IfThenElse(hn::Lt(v, hn::Set(df, 1.0f)), v, hn::Set(df, 1.0f));
+  return hn::IfThenElseZero(hn::Gt(v, hn::Zero(df)), hi);
+}
+
+// lround(clamp(v, 0, 1) * 255) as an integer lane: v * 255 >= 0, so rounding half away from
+// zero is trunc + (frac >= 0.5), both exact.
+HWY_INLINE hn::Vec<DU> to_unorm8(VF v) {
+  const DF df;
+  VF s = hn::Mul(clamp_unit(v), hn::Set(df, 255.0f));
+  VF t = hn::Trunc(s);
+  VF r = hn::Add(t, hn::IfThenElseZero(hn::Ge(hn::Sub(s, t), hn::Set(df, 0.5f)), hn::Set(df, 1.0f)));
+  return hn::BitCast(DU(), hn::ConvertTo(DI(), r));
+}
+
+HWY_INLINE VF channel(hn::Vec<DU> px, int c) {
+  const DU du;
+  hn::Vec<DU> v = hn::And(hn::ShiftRightSame(px, 8 * c), hn::Set(du, 0xffu));
+  return hn::ConvertTo(DF(), hn::BitCast(DI(), v));
+}
+
+/// fragment_ops.cpp's write_color for the live lanes of a group at `pixels`.
+HWY_INLINE void write_colors(const FragmentState& fs, Rgba src, MF live, std::uint32_t* pixels) {
+  const DF df;
+  const DU du;
+  for (VF& c : src.c) c = clamp_unit(c);
+  bool masked = !(fs.color_mask[0] && fs.color_mask[1] && fs.color_mask[2] && fs.color_mask[3]);
+  hn::Vec<DU> old = (fs.blend.enabled || masked) ? hn::LoadU(du, pixels) : hn::Zero(du);
+  Rgba out = src;
+  if (fs.blend.enabled) {
+    Rgba dst;
+    for (int c = 0; c < 4; ++c) dst.c[c] = hn::Div(channel(old, c), hn::Set(df, 255.0f));
+    for (int c = 0; c < 4; ++c) {
+      out.c[c] = hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
+                         hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst)));
+    }
+  }
+  hn::Vec<DU> packed = hn::Zero(du);
+  for (int c = 0; c < 4; ++c) {
+    hn::Vec<DU> v = fs.color_mask[c] ? to_unorm8(out.c[c])
+                                     : hn::And(hn::ShiftRightSame(old, 8 * c), hn::Set(du, 0xffu));
+    packed = hn::Or(packed, hn::ShiftLeftSame(v, 8 * c));
+  }
+  hn::BlendedStore(packed, hn::RebindMask(du, live), du, pixels);
+}
+
+}  // namespace shadelab::fast::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // SHADELAB_FAST_FRAGMENT_INL_H_

@@ -1,0 +1,177 @@
+// The OpenGL lighting equation (src/lighting/lighting.cpp) over SIMD lanes, one point per lane.
+// Every operation is the reference's float operation in the reference's order (no FMA), so
+// results are bitwise light_point's except the powers (exp(e log c) here, std::pow there).
+// Per-target code: included by Highway dispatch units once per SIMD target.
+#if defined(SHADELAB_FAST_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SHADELAB_FAST_LIGHTING_INL_H_
+#undef SHADELAB_FAST_LIGHTING_INL_H_
+#else
+#define SHADELAB_FAST_LIGHTING_INL_H_
+#endif
+
+#include "fast/lighting_setup.hpp"
+#include "hwy/contrib/math/math-inl.h"
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace shadelab::fast::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+template <class D>
+struct V3 {
+  hn::Vec<D> x, y, z;
+};
+
+/// Points to light: eye-space positions and unit normals (already flipped for back faces).
+template <class D>
+struct LitIn {
+  V3<D> p, n;
+};
+
+/// Lit colours: primary rgb (alpha is the material's) and secondary rgb, clamped to [0, 1].
+template <class D>
+struct LitOut {
+  V3<D> primary, secondary;
+};
+
+// glm::dot for vec3: (x*x' + y*y') + z*z'.
+template <class D>
+HWY_INLINE hn::Vec<D> dot3(const V3<D>& a, const V3<D>& b) {
+  return hn::Add(hn::Add(hn::Mul(a.x, b.x), hn::Mul(a.y, b.y)), hn::Mul(a.z, b.z));
+}
+
+template <class D>
+HWY_INLINE V3<D> splat3(D d, const float v[3]) {
+  return {hn::Set(d, v[0]), hn::Set(d, v[1]), hn::Set(d, v[2])};
+}
+
+// len > 0 ? v / len : fallback, with len = glm::length(v).
+template <class D>
+HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Vec<D>* length) {
+  hn::Vec<D> len = hn::Sqrt(dot3(v, v));
+  auto ok = hn::Gt(len, hn::Zero(d));
+  if (length) *length = len;
+  return {hn::IfThenElse(ok, hn::Div(v.x, len), fallback.x),
+          hn::IfThenElse(ok, hn::Div(v.y, len), fallback.y),
+          hn::IfThenElse(ok, hn::Div(v.z, len), fallback.z)};
+}
+
+// c^e for c > 0 (other lanes are garbage and must be masked by the caller).
+template <class D>
+HWY_INLINE hn::Vec<D> pow_positive(D d, hn::Vec<D> c, float e) {
+  return hn::Exp(d, hn::Mul(hn::Set(d, e), hn::Log(d, c)));
+}
+
+// lighting.cpp's spot_factor for a positional light with a cone.
+template <class D>
+HWY_INLINE hn::Vec<D> spot_lanes(D d, const LightParams& l, const V3<D>& to_light) {
+  if (l.spot_dark) return hn::Zero(d);
+  V3<D> neg{hn::Neg(to_light.x), hn::Neg(to_light.y), hn::Neg(to_light.z)};
+  hn::Vec<D> c = dot3(neg, splat3(d, l.spot_dir));
+  auto outside = hn::Lt(c, hn::Set(d, l.cos_cutoff));
+  // pow(0, 0) is 1 in C, as the GL equation wants at exponent 0.
+  if (l.spot_exponent == 0.0f) return hn::IfThenZeroElse(outside, hn::Set(d, 1.0f));
+  hn::Vec<D> cc = hn::Max(c, hn::Zero(d));
+  hn::Vec<D> p = hn::IfThenElseZero(hn::Gt(cc, hn::Zero(d)), pow_positive(d, cc, l.spot_exponent));
+  return hn::IfThenZeroElse(outside, p);
+}
+
+// The specular cosine raised to the shininess (specular_factor in lighting.cpp).
+template <class D>
+HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialParams& m,
+                                     const V3<D>& n, const V3<D>& to_light, hn::Vec<D> n_dot_l,
+                                     const V3<D>& v) {
+  hn::Vec<D> c;
+  if (m.phong_specular) {
+    hn::Vec<D> two_ndl = hn::Mul(hn::Set(d, 2.0f), n_dot_l);
+    V3<D> r{hn::Sub(hn::Mul(two_ndl, n.x), to_light.x), hn::Sub(hn::Mul(two_ndl, n.y), to_light.y),
+            hn::Sub(hn::Mul(two_ndl, n.z), to_light.z)};
+    c = dot3(r, v);
+  } else if (l.const_half) {
+    c = dot3(n, splat3(d, l.half));
+  } else {
+    V3<D> h{hn::Add(to_light.x, v.x), hn::Add(to_light.y, v.y), hn::Add(to_light.z, v.z)};
+    V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+    c = dot3(n, normalize_or(d, h, zero, nullptr));
+  }
+  auto positive = hn::Gt(c, hn::Zero(d));
+  if (m.shininess == 0.0f) return hn::IfThenElseZero(positive, hn::Set(d, 1.0f));
+  return hn::IfThenElseZero(positive, pow_positive(d, c, m.shininess));
+}
+
+// Direction to the light and attenuation * spot for one light.
+template <class D>
+HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p, V3<D>& to_light) {
+  if (!l.positional) {
+    to_light = splat3(d, l.pos);
+    return hn::Set(d, l.const_spot);  // attenuation 1
+  }
+  V3<D> delta{hn::Sub(hn::Set(d, l.pos[0]), p.x), hn::Sub(hn::Set(d, l.pos[1]), p.y),
+              hn::Sub(hn::Set(d, l.pos[2]), p.z)};
+  V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+  hn::Vec<D> dist;
+  to_light = normalize_or(d, delta, zero, &dist);
+  hn::Vec<D> denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
+                             hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
+  hn::Vec<D> att = hn::IfThenElseZero(hn::Gt(denom, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), denom));
+  if (!l.spot) return att;
+  return hn::Mul(att, spot_lanes(d, l, to_light));
+}
+
+// (s * a[c]) * b[c] for the three channels, as glm evaluates scale * rgb(a) * rgb(b).
+template <class D>
+HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float a[3], const float b[3]) {
+  return {hn::Mul(hn::Mul(s, hn::Set(d, a[0])), hn::Set(d, b[0])),
+          hn::Mul(hn::Mul(s, hn::Set(d, a[1])), hn::Set(d, b[1])),
+          hn::Mul(hn::Mul(s, hn::Set(d, a[2])), hn::Set(d, b[2]))};
+}
+
+// lighting.cpp's clamp01: x > 0 ? min(x, 1) : 0, so NaN becomes 0.
+template <class D>
+HWY_INLINE hn::Vec<D> clamp01(D d, hn::Vec<D> x) {
+  hn::Vec<D> hi = hn::IfThenElse(hn::Lt(x, hn::Set(d, 1.0f)), x, hn::Set(d, 1.0f));
+  return hn::IfThenElseZero(hn::Gt(x, hn::Zero(d)), hi);
+}
+
+/// The whole equation for every lane: light_point(model, lights, material, {p, n}).
+template <class D>
+HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialParams& m,
+                                 const LitIn<D>& in) {
+  V3<D> v{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
+  if (s.local_viewer) {
+    V3<D> minus_p{hn::Neg(in.p.x), hn::Neg(in.p.y), hn::Neg(in.p.z)};
+    v = normalize_or(d, minus_p, v, nullptr);
+  }
+  V3<D> primary = splat3(d, m.base);
+  V3<D> spec{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
+  for (const LightParams& l : s.lights) {
+    V3<D> to_light;
+    hn::Vec<D> scale = light_direction(d, l, in.p, to_light);
+    hn::Vec<D> n_dot_l = dot3(in.n, to_light);
+    // lighting.cpp: diffuse and specular only where n.L > 0 and attenuation * spot > 0.
+    auto lit = hn::And(hn::Gt(n_dot_l, hn::Zero(d)), hn::Gt(scale, hn::Zero(d)));
+    V3<D> amb = scaled(d, scale, m.ambient, l.ambient);
+    V3<D> dif = scaled(d, hn::Mul(scale, n_dot_l), m.diffuse, l.diffuse);
+    primary.x = hn::Add(primary.x, hn::Add(amb.x, hn::IfThenElseZero(lit, dif.x)));
+    primary.y = hn::Add(primary.y, hn::Add(amb.y, hn::IfThenElseZero(lit, dif.y)));
+    primary.z = hn::Add(primary.z, hn::Add(amb.z, hn::IfThenElseZero(lit, dif.z)));
+    if (hn::AllFalse(d, lit)) continue;  // adding zeros changes nothing
+    hn::Vec<D> f = specular_lanes(d, l, m, in.n, to_light, n_dot_l, v);
+    V3<D> sp = scaled(d, hn::Mul(scale, f), m.specular, l.specular);
+    spec.x = hn::Add(spec.x, hn::IfThenElseZero(lit, sp.x));
+    spec.y = hn::Add(spec.y, hn::IfThenElseZero(lit, sp.y));
+    spec.z = hn::Add(spec.z, hn::IfThenElseZero(lit, sp.z));
+  }
+  if (!s.separate_specular) {
+    V3<D> sum{hn::Add(primary.x, spec.x), hn::Add(primary.y, spec.y), hn::Add(primary.z, spec.z)};
+    return {{clamp01(d, sum.x), clamp01(d, sum.y), clamp01(d, sum.z)},
+            {hn::Zero(d), hn::Zero(d), hn::Zero(d)}};
+  }
+  return {{clamp01(d, primary.x), clamp01(d, primary.y), clamp01(d, primary.z)},
+          {clamp01(d, spec.x), clamp01(d, spec.y), clamp01(d, spec.z)}};
+}
+
+}  // namespace shadelab::fast::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // SHADELAB_FAST_LIGHTING_INL_H_

@@ -1,0 +1,109 @@
+// The per-draw plan: which attribute slots vertices carry (only those the draw reads), where
+// lighting happens and which fragments take the per-fragment reference path.
+#include "fast/plan.hpp"
+
+#include <algorithm>
+
+namespace shadelab::fast {
+
+namespace {
+
+int take(VaryingLayout& l, int floats) {
+  int offset = l.count;
+  l.count += floats;
+  return offset;
+}
+
+// Colour slots, as draw.cpp's vertex_colors fills them: lit colours, or the given ones.
+void color_layout(const DrawJob& job, VaryingLayout& l) {
+  const DrawPlan& p = job.plan;
+  const VertexInput& in = *job.in;
+  l.front_color = take(l, 4);
+  if (p.vertex_lighting) {
+    bool separate = job.shade->model.separate_specular;
+    l.back_color = p.two_side ? take(l, 4) : l.front_color;
+    l.front_secondary = separate ? take(l, 3) : -1;
+    l.back_secondary = separate && p.two_side ? take(l, 3) : l.front_secondary;
+    return;
+  }
+  l.back_color = in.back_colors.empty() ? l.front_color : take(l, 4);
+  l.front_secondary = in.secondary_colors.empty() ? -1 : take(l, 3);
+  l.back_secondary = in.back_secondary_colors.empty() ? l.front_secondary : take(l, 3);
+}
+
+bool writes_color(const FragmentState& f) {
+  return f.capture || f.color_mask[0] || f.color_mask[1] || f.color_mask[2] || f.color_mask[3];
+}
+
+void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, to); }
+
+}  // namespace
+
+bool has_shadow_maps(const ShadeState& shade) {
+  std::size_t n = std::min(shade.lights.size(), shade.shadow_maps.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    if (shade.shadow_maps[i].size > 0 && !shade.shadow_maps[i].faces.empty()) return true;
+  }
+  return false;
+}
+
+const float* shadow_visibility(const ShadeState& shade, const glm::vec3& p, const glm::vec3& n,
+                               std::vector<float>& buffer) {
+  if (shade.shadow_maps.empty()) return nullptr;
+  buffer.assign(shade.lights.size(), 1.0f);
+  for (std::size_t i = 0; i < buffer.size() && i < shade.shadow_maps.size(); ++i) {
+    buffer[i] = shade.shadow_maps[i].visibility(p, n);
+  }
+  return buffer.data();
+}
+
+void make_plan(DrawJob& job) {
+  const ShadeState& shade = *job.shade;
+  const FragmentState& frag = *job.frag;
+  DrawPlan& p = job.plan;
+  bool shadows = has_shadow_maps(shade);
+  p.two_side = shade.model.two_side;
+  p.phong = shade.lighting && shade.shading == ShadingMode::kPhong;
+  p.vertex_lighting = shade.lighting && !p.phong;
+  p.flat = shade.shading == ShadingMode::kFlat;
+  bool simd_materials = simd_supports(shade.front) && (!p.two_side || simd_supports(shade.back));
+  p.simd_vertex_lighting = p.vertex_lighting && !shadows && simd_materials;
+  p.writes_color = writes_color(frag);
+  p.scalar_fragments = frag.stencil.enabled || frag.capture || shade.texture ||
+                       (p.phong && (shadows || !simd_materials));
+  VaryingLayout l;
+  if (!p.phong) color_layout(job, l);
+  if (p.phong) {
+    l.eye_position = take(l, 3);
+    l.eye_normal = take(l, 3);
+  }
+  if (shade.texture) l.texcoord = take(l, 2);
+  p.layout = l;
+  if (shade.lighting) {
+    make_lighting_setup(shade.model, shade.lights, shade.front, shade.back, p.lighting);
+  }
+}
+
+void expand_varyings(const VaryingLayout& l, const float* v, detail::Attribs& a) {
+  a.fill(0.0f);
+  if (l.front_color >= 0) copy_slot(v + l.front_color, &a[detail::kFrontColor], 4);
+  if (l.back_color >= 0) copy_slot(v + l.back_color, &a[detail::kBackColor], 4);
+  if (l.front_secondary >= 0) copy_slot(v + l.front_secondary, &a[detail::kFrontSecondary], 3);
+  if (l.back_secondary >= 0) copy_slot(v + l.back_secondary, &a[detail::kBackSecondary], 3);
+  if (l.eye_position >= 0) copy_slot(v + l.eye_position, &a[detail::kEyePosition], 3);
+  if (l.eye_normal >= 0) copy_slot(v + l.eye_normal, &a[detail::kEyeNormal], 3);
+  if (l.texcoord >= 0) copy_slot(v + l.texcoord, &a[detail::kTexCoord], 2);
+}
+
+void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v) {
+  // Aliased back slots hold the same values as the front ones; the front copy wins.
+  if (l.back_color >= 0) copy_slot(&a[detail::kBackColor], v + l.back_color, 4);
+  if (l.front_color >= 0) copy_slot(&a[detail::kFrontColor], v + l.front_color, 4);
+  if (l.back_secondary >= 0) copy_slot(&a[detail::kBackSecondary], v + l.back_secondary, 3);
+  if (l.front_secondary >= 0) copy_slot(&a[detail::kFrontSecondary], v + l.front_secondary, 3);
+  if (l.eye_position >= 0) copy_slot(&a[detail::kEyePosition], v + l.eye_position, 3);
+  if (l.eye_normal >= 0) copy_slot(&a[detail::kEyeNormal], v + l.eye_normal, 3);
+  if (l.texcoord >= 0) copy_slot(&a[detail::kTexCoord], v + l.texcoord, 2);
+}
+
+}  // namespace shadelab::fast

@@ -1,0 +1,175 @@
+// Triangle setup and binning: clip tests from the vertex outcodes (the clipper itself for the
+// few triangles that cross the view volume), facing and culling from the reference's window
+// area, then each triangle's index into every tile its pixel box touches, in submission order.
+#include "fast/setup.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace shadelab::fast {
+
+namespace {
+
+using detail::ClipVertex;
+
+// Twice the signed window area, as draw.cpp's signed_area sums it.
+double signed_area(const RasterVertex* const* v, std::size_t n) {
+  double a = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const RasterVertex& p = *v[i];
+    const RasterVertex& q = *v[(i + 1) % n];
+    a += p.x * q.y - q.x * p.y;
+  }
+  return a;
+}
+
+// Facing and culling; false when the polygon is dropped (and counted).
+bool keep(const DrawJob& job, double area, bool& front, RenderStats& stats) {
+  if (area == 0.0 || !std::isfinite(area)) {
+    ++stats.triangles_culled;
+    return false;
+  }
+  front = (area > 0.0) == job.frag->front_ccw;
+  CullMode cull = job.frag->cull;
+  if ((cull == CullMode::kBack && !front) || (cull == CullMode::kFront && front)) {
+    ++stats.triangles_culled;
+    return false;
+  }
+  ++stats.triangles_rasterized;
+  return true;
+}
+
+// True when some pixel centre of the tile may pass edge a->b (conservative, exact integers).
+bool tile_touches_edge(const RasterVertex& a, const RasterVertex& b, std::int64_t threshold,
+                       int tx, int ty) {
+  std::int64_t dx = std::int64_t(b.sx) - a.sx, dy = std::int64_t(b.sy) - a.sy;
+  std::int64_t px = std::int64_t(tx) * kTileSize * detail::kSubpixelOne + detail::kSubpixelOne / 2;
+  std::int64_t py = std::int64_t(ty) * kTileSize * detail::kSubpixelOne + detail::kSubpixelOne / 2;
+  // The edge function grows with y by dx and falls with x by dy: its largest value on the
+  // tile's centres is at the corner picked by those signs.
+  std::int64_t span = std::int64_t(kTileSize - 1) * detail::kSubpixelOne;
+  std::int64_t cx = dy < 0 ? px + span : px, cy = dx > 0 ? py + span : py;
+  return dx * (cy - a.sy) - dy * (cx - a.sx) >= threshold;
+}
+
+// Bins one triangle (window vertices in fan order) into the tiles its box covers.
+void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
+                  const RasterVertex& b, const RasterVertex& c, std::uint32_t entry) {
+  std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
+                      (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
+  if (area == 0) return;  // the rasterizer draws nothing
+  const int w = job.fb->width, h = job.fb->height;
+  std::int64_t min_x = std::min({a.sx, b.sx, c.sx}), max_x = std::max({a.sx, b.sx, c.sx});
+  std::int64_t min_y = std::min({a.sy, b.sy, c.sy}), max_y = std::max({a.sy, b.sy, c.sy});
+  // The reference rasterizer's pixel box.
+  int x0 = int(std::max<std::int64_t>(0, (min_x >> detail::kSubpixelBits) - 1));
+  int x1 = int(std::min<std::int64_t>(w - 1, (max_x >> detail::kSubpixelBits) + 1));
+  int y0 = int(std::max<std::int64_t>(0, (min_y >> detail::kSubpixelBits) - 1));
+  int y1 = int(std::min<std::int64_t>(h - 1, (max_y >> detail::kSubpixelBits) + 1));
+  if (x0 > x1 || y0 > y1) return;
+  int tx0 = x0 >> kTileShift, tx1 = x1 >> kTileShift, ty0 = y0 >> kTileShift, ty1 = y1 >> kTileShift;
+  bool test_tiles = (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 2;
+  // Edges of the counter-clockwise triangle and their thresholds (0 if owned, else 1).
+  const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
+  std::int64_t t[3];
+  for (int e = 0; e < 3; ++e) {
+    const RasterVertex &p = *v[(e + 1) % 3], &q = *v[(e + 2) % 3];
+    t[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0 : 1;
+  }
+  for (int ty = ty0; ty <= ty1; ++ty) {
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      if (test_tiles && !(tile_touches_edge(*v[1], *v[2], t[0], tx, ty) &&
+                          tile_touches_edge(*v[2], *v[0], t[1], tx, ty) &&
+                          tile_touches_edge(*v[0], *v[1], t[2], tx, ty))) {
+        continue;
+      }
+      chunk.bins[std::size_t(ty) * job.tiles_x + tx].push_back(entry);
+    }
+  }
+}
+
+// draw.cpp's to_window for a clipped vertex.
+RasterVertex to_window(const ClipVertex& v, const Viewport& vp) {
+  float inv_w = 1.0f / v.clip.w;
+  double nx = double(v.clip.x) * inv_w, ny = double(v.clip.y) * inv_w;
+  float nz = v.clip.z * inv_w;
+  RasterVertex w;
+  w.x = (nx + 1.0) * 0.5 * vp.width + vp.x;
+  w.y = (ny + 1.0) * 0.5 * vp.height + vp.y;
+  w.z = nz * 0.5f * (vp.far_depth - vp.near_depth) + 0.5f * (vp.far_depth + vp.near_depth);
+  w.inv_w = inv_w;
+  detail::FixedPoint s = detail::snap(w.x, w.y);
+  w.sx = std::int32_t(s.x);
+  w.sy = std::int32_t(s.y);
+  return w;
+}
+
+// Whether the clipper would cut the triangle to nothing without making a vertex: some plane
+// has every vertex outside it, and no earlier plane has any vertex outside.
+bool trivially_outside(std::uint8_t all, std::uint8_t any) {
+  return all != 0 && std::countr_zero(unsigned(all)) <= std::countr_zero(unsigned(any));
+}
+
+void setup_clipped(const DrawJob& job, SetupChunk& chunk, const Triangle& tri) {
+  RenderStats& stats = chunk.stats;
+  const VaryingLayout& l = job.plan.layout;
+  chunk.poly.resize(3);
+  for (int k = 0; k < 3; ++k) {
+    ClipVertex& cv = chunk.poly[std::size_t(k)];
+    cv.clip = job.projection * job.in->positions[tri[k]];
+    expand_varyings(l, &job.varyings[std::size_t(tri[k]) * l.count], cv.attr);
+  }
+  if (detail::clip_polygon(chunk.poly, chunk.scratch)) ++stats.triangles_clipped;
+  std::size_t n = chunk.poly.size();
+  if (n == 0) return;
+  std::size_t base = chunk.clip_vertices.size();
+  for (const ClipVertex& cv : chunk.poly) {
+    chunk.clip_vertices.push_back(to_window(cv, job.viewport));
+    chunk.clip_varyings.resize(chunk.clip_varyings.size() + std::size_t(l.count));
+    compact_varyings(l, cv.attr, &chunk.clip_varyings[chunk.clip_varyings.size() - l.count]);
+  }
+  const RasterVertex* win[16];
+  for (std::size_t i = 0; i < n; ++i) win[i] = &chunk.clip_vertices[base + i];
+  bool front = false;
+  if (!keep(job, signed_area(win, n), front, stats)) return;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    std::uint32_t index = std::uint32_t(chunk.clipped.size());
+    chunk.clipped.push_back({{std::uint32_t(base), std::uint32_t(base + i), std::uint32_t(base + i + 1)}, tri[2]});
+    std::uint32_t entry = index | kBinClipped | (front ? kBinFront : 0);
+    bin_triangle(job, chunk, *win[0], *win[i], *win[i + 1], entry);
+  }
+}
+
+}  // namespace
+
+void reset_chunk(SetupChunk& chunk, std::size_t tiles) {
+  if (chunk.bins.size() != tiles) chunk.bins.resize(tiles);
+  for (auto& bin : chunk.bins) bin.clear();
+  chunk.clip_vertices.clear();
+  chunk.clip_varyings.clear();
+  chunk.clipped.clear();
+  chunk.stats = RenderStats{};
+}
+
+void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::size_t end) {
+  const std::size_t n = job.vertices.size();
+  RenderStats& stats = chunk.stats;
+  for (std::size_t t = begin; t < end; ++t) {
+    ++stats.triangles_in;
+    const Triangle& tri = job.in->triangles[t];
+    if (tri[0] >= n || tri[1] >= n || tri[2] >= n) continue;
+    std::uint8_t oa = job.outcodes[tri[0]], ob = job.outcodes[tri[1]], oc = job.outcodes[tri[2]];
+    if ((oa | ob | oc) != 0) {
+      if (trivially_outside(oa & ob & oc, oa | ob | oc)) ++stats.triangles_clipped;
+      else setup_clipped(job, chunk, tri);
+      continue;
+    }
+    const RasterVertex* v[3] = {&job.vertices[tri[0]], &job.vertices[tri[1]], &job.vertices[tri[2]]};
+    bool front = false;
+    if (!keep(job, signed_area(v, 3), front, stats)) continue;
+    bin_triangle(job, chunk, *v[0], *v[1], *v[2], std::uint32_t(t) | (front ? kBinFront : 0));
+  }
+}
+
+}  // namespace shadelab::fast

@@ -1,0 +1,18 @@
+// Triangle setup and binning for the fast pipeline (setup.cpp): reads the vertex stage's
+// output, writes a chunk's per-tile bins. Draws no pixels.
+#pragma once
+
+#include <cstddef>
+
+#include "fast/draw_job.hpp"
+
+namespace shadelab::fast {
+
+/// Empties a chunk for a new draw over `tiles` tiles (keeping its storage).
+void reset_chunk(SetupChunk& chunk, std::size_t tiles);
+
+/// Sets up triangles [begin, end) of the draw into `chunk`: clipping, facing, culling, and
+/// binning in submission order.
+void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::size_t end);
+
+}  // namespace shadelab::fast

@@ -1,0 +1,167 @@
+// Per-tile triangle setup (the reference rasterizer's orientation, fill rule and pixel box)
+// and the per-fragment reference path, which reproduces reference_raster.inl's fragment and
+// draw.cpp's fragment handling exactly.
+#include "fast/triangle.hpp"
+
+#include <algorithm>
+#include <atomic>
+
+#include "pipeline/fragment_ops.hpp"
+
+namespace shadelab::fast {
+
+namespace {
+
+detail::WindowVertex window_vertex(const RasterVertex& v, const detail::Attribs* attr) {
+  return {v.x, v.y, v.z, v.inv_w, attr};
+}
+
+void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVertex* v[3],
+             const float* var[3], std::uint32_t& provoking) {
+  const std::size_t stride = std::size_t(job.plan.layout.count);
+  std::uint32_t index = entry & kBinIndexMask;
+  if (entry & kBinClipped) {
+    const SetupChunk& ch = job.chunks[std::size_t(chunk)];
+    const ClippedTriangle& ct = ch.clipped[index];
+    for (int k = 0; k < 3; ++k) {
+      v[k] = &ch.clip_vertices[ct.v[k]];
+      var[k] = &ch.clip_varyings[ct.v[k] * stride];
+    }
+    provoking = ct.provoking;
+    return;
+  }
+  const Triangle& tri = job.in->triangles[index];
+  for (int k = 0; k < 3; ++k) {
+    v[k] = &job.vertices[tri[k]];
+    var[k] = &job.varyings[tri[k] * stride];
+  }
+  provoking = tri[2];
+}
+
+// The reference's pixel box, cut to the tile.
+bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t) {
+  std::int64_t min_x = std::min({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
+  std::int64_t max_x = std::max({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
+  std::int64_t min_y = std::min({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
+  std::int64_t max_y = std::max({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
+  t.x0 = int(std::max<std::int64_t>(tx, (min_x >> detail::kSubpixelBits) - 1));
+  t.x1 = int(std::min<std::int64_t>({job.fb->width - 1, tx + kTileSize - 1, (max_x >> detail::kSubpixelBits) + 1}));
+  t.y0 = int(std::max<std::int64_t>(ty, (min_y >> detail::kSubpixelBits) - 1));
+  t.y1 = int(std::min<std::int64_t>({job.fb->height - 1, ty + kTileSize - 1, (max_y >> detail::kSubpixelBits) + 1}));
+  return t.x0 <= t.x1 && t.y0 <= t.y1;
+}
+
+}  // namespace
+
+bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
+                    TriSetup& t) {
+  const RasterVertex* v[3];
+  const float* var[3];
+  resolve(job, chunk, entry, v, var, t.provoking_index);
+  const RasterVertex &a = *v[0], &b = *v[1], &c = *v[2];
+  std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
+                      (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
+  if (area == 0) return false;
+  int i1 = area > 0 ? 1 : 2, i2 = area > 0 ? 2 : 1;  // counter-clockwise, as the reference
+  t.v[0] = v[0], t.v[1] = v[i1], t.v[2] = v[i2];
+  t.var[0] = var[0], t.var[1] = var[i1], t.var[2] = var[i2];
+  t.area = area > 0 ? area : -area;
+  if (!pixel_box(job, tx, ty, t)) return false;
+  for (int e = 0; e < 3; ++e) {
+    const RasterVertex &p = *t.v[(e + 1) % 3], &q = *t.v[(e + 2) % 3];
+    t.dx[e] = std::int64_t(q.sx) - p.sx;
+    t.dy[e] = std::int64_t(q.sy) - p.sy;
+    t.threshold[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0.0 : 1.0;
+  }
+  t.front = (entry & kBinFront) != 0;
+  const std::size_t stride = std::size_t(job.plan.layout.count);
+  t.flat = job.plan.flat ? &job.varyings[t.provoking_index * stride] : nullptr;
+  t.offset = 0.0f;
+  if (job.frag->polygon_offset) {  // from the fan's vertex order, as draw.cpp
+    t.offset = detail::polygon_offset(window_vertex(a, nullptr), window_vertex(b, nullptr),
+                                      window_vertex(c, nullptr), *job.frag);
+  }
+  return true;
+}
+
+void expand_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+  const VaryingLayout& l = job.plan.layout;
+  for (int k = 0; k < 3; ++k) expand_varyings(l, t.var[k], ws.attribs[k]);
+  if (!t.flat) return;
+  detail::Attribs provoking;
+  expand_varyings(l, t.flat, provoking);
+  for (detail::Attribs& a : ws.attribs) {
+    for (int i = detail::kFrontColor; i < detail::kEyePosition; ++i) a[i] = provoking[i];
+  }
+}
+
+namespace {
+
+// reference_raster.inl's fragment at pixel (x, y): perspective-correct attributes in double.
+detail::Fragment reference_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws,
+                                    int x, int y, double w0, double w1, float z) {
+  detail::WindowVertex wv[3];
+  const detail::WindowVertex* v[3];
+  for (int k = 0; k < 3; ++k) {
+    wv[k] = window_vertex(*t.v[k], &ws.attribs[k]);
+    v[k] = &wv[k];
+  }
+  detail::Fragment frag;
+  frag.x = x;
+  frag.y = y;
+  frag.z = z;
+  double b0 = w0 / double(t.area), b1 = w1 / double(t.area);
+  double b2 = 1.0 - b0 - b1;
+  double q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
+  double inv = 1.0 / (q0 + q1 + q2);
+  q0 *= inv;
+  q1 *= inv;
+  q2 *= inv;
+  for (int i = 0; i < detail::kAttrCount; ++i) {
+    frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
+                                      q2 * (*v[2]->attr)[i]);
+  }
+  if (job.shade->texture) {
+    detail::FixedPoint p[3];
+    for (int k = 0; k < 3; ++k) p[k] = {t.v[k]->sx, t.v[k]->sy};
+    detail::FixedPoint centre{std::int64_t(x) * detail::kSubpixelOne + detail::kSubpixelOne / 2,
+                              std::int64_t(y) * detail::kSubpixelOne + detail::kSubpixelOne / 2};
+    detail::texture_derivatives(v, p, centre, frag);
+  }
+  return frag;
+}
+
+// draw.cpp's capture branch; the counters are shared by every tile's thread.
+void capture(FragmentCapture& cap, std::size_t px, float z, const glm::vec4& color,
+             const BlendState& blend, RenderStats& stats) {
+  std::atomic_ref<std::size_t> count(cap.count);
+  if (count.fetch_add(1) >= cap.limit) {
+    count.fetch_sub(1);
+    std::atomic_ref<std::size_t>(cap.dropped).fetch_add(1);
+    return;
+  }
+  cap.pixels[px].push_back({z, color, blend});
+  ++stats.pixels_shaded;
+}
+
+}  // namespace
+
+void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
+                     double w0, double w1, float z) {
+  Framebuffer& fb = *job.fb;
+  const FragmentState& frag = *job.frag;
+  std::size_t px = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
+  ++ws.stats.fragments;
+  if (!detail::depth_stencil_test(fb, px, z, frag)) return;
+  if (!job.plan.writes_color) {
+    ++ws.stats.pixels_shaded;
+    return;
+  }
+  detail::Fragment f = reference_fragment(job, t, ws, x, y, w0, w1, z);
+  glm::vec4 color = detail::shade_fragment(*job.shade, f, t.front);
+  if (frag.capture) return capture(*frag.capture, px, z, color, frag.blend, ws.stats);
+  detail::write_color(fb, px, color, frag);
+  ++ws.stats.pixels_shaded;
+}
+
+}  // namespace shadelab::fast

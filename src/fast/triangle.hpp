@@ -1,0 +1,49 @@
+// One binned triangle made ready for rasterizing a tile: its vertices in the reference
+// rasterizer's counter-clockwise order, exact integer edge functions and fill-rule thresholds,
+// its pixel box; and the per-fragment reference path (stencil, capture, textures, other
+// lighting) that fragments take when a draw needs it. No SIMD here.
+#pragma once
+
+#include <cstdint>
+
+#include "fast/draw_job.hpp"
+
+namespace shadelab::fast {
+
+struct TriSetup {
+  const RasterVertex* v[3];  ///< counter-clockwise (the reference's order after its swap)
+  const float* var[3];       ///< their varyings
+  const float* flat;         ///< provoking vertex's varyings when flat shading, else null
+  bool front;
+  std::int64_t area;         ///< twice the snapped area, > 0
+  std::int64_t dx[3], dy[3];  ///< edge e runs from v[e+1] to v[e+2] (mod 3)
+  double threshold[3];        ///< coverage: edge value >= threshold (0 owned, 1 not)
+  float offset;               ///< polygon offset added to depth
+  int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
+  std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
+};
+
+/// Prepares bin entry `entry` of setup chunk `chunk` for the tile with pixel origin (tx, ty).
+/// Returns false when the triangle has no pixels in the tile (or zero snapped area).
+bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
+                    TriSetup& t);
+
+/// Edge e's value at the centre of pixel (x, y): exact, as the reference's edge_function.
+inline std::int64_t edge_at(const TriSetup& t, int e, int x, int y) {
+  const RasterVertex& p = *t.v[(e + 1) % 3];
+  std::int64_t cx = std::int64_t(x) * detail::kSubpixelOne + detail::kSubpixelOne / 2;
+  std::int64_t cy = std::int64_t(y) * detail::kSubpixelOne + detail::kSubpixelOne / 2;
+  return t.dx[e] * (cy - p.sy) - t.dy[e] * (cx - p.sx);
+}
+
+/// Loads the triangle's three full reference attribute sets into ws.attribs (flat shading's
+/// provoking colours substituted), for scalar_fragment.
+void expand_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws);
+
+/// The reference's per-fragment work for the covered pixel (x, y) with edge values w0, w1
+/// and window depth z (offset and clamped): depth/stencil test, shading with shade_fragment,
+/// capture or blending and colour write. Needs expand_triangle first.
+void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
+                     double w0, double w1, float z);
+
+}  // namespace shadelab::fast

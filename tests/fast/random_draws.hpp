@@ -1,0 +1,306 @@
+// Random draws for the fast pipeline's differential tests: meshes (soups of tiny to huge
+// triangles, shared-vertex spheres and walls, clipped and degenerate ones), lights, materials,
+// textures, shadow maps, projections, viewports and fragment states, all from one seed.
+#pragma once
+
+#include <memory>
+#include <random>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "shadelab/pipeline.hpp"
+
+namespace shadelab::test {
+
+/// One draw_triangles call and everything its spans point into.
+struct RandomDraw {
+  std::vector<glm::vec4> positions, colors, back_colors;
+  std::vector<glm::vec3> normals, secondary, back_secondary;
+  std::vector<glm::vec2> texcoords;
+  std::vector<Triangle> triangles;
+  std::vector<Light> lights;
+  std::vector<ShadowMap> shadow_maps;
+  std::shared_ptr<Texture> texture;
+  glm::vec4 constant_color{1.0f};
+  glm::mat4 projection{1.0f};
+  Viewport viewport;
+  FragmentState frag;
+  ShadeState shade;
+  bool capture = false;
+
+  VertexInput input() const {
+    VertexInput in;
+    in.positions = positions;
+    in.normals = normals;
+    in.colors = colors;
+    in.back_colors = back_colors;
+    in.secondary_colors = secondary;
+    in.back_secondary_colors = back_secondary;
+    in.texcoords = texcoords;
+    in.constant_color = constant_color;
+    in.triangles = triangles;
+    return in;
+  }
+};
+
+class RandomDraws {
+ public:
+  explicit RandomDraws(unsigned seed) : rng_(seed) {}
+
+  float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng_); }
+  int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
+  bool chance(double p) { return std::bernoulli_distribution(p)(rng_); }
+  glm::vec4 color(float alpha_lo = 1.0f) {
+    return {uniform(0, 1), uniform(0, 1), uniform(0, 1), uniform(alpha_lo, 1)};
+  }
+  glm::vec3 unit() {
+    glm::vec3 v(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+    float l = glm::length(v);
+    return l > 1e-3f ? v / l : glm::vec3(0, 0, 1);
+  }
+
+  /// A framebuffer size: mostly small and odd, sometimes a few hundred pixels.
+  glm::ivec2 size() {
+    if (chance(0.15)) return {integer(1, 9), integer(1, 9)};
+    if (chance(0.2)) return {integer(100, 400), integer(80, 300)};
+    return {integer(10, 140), integer(10, 110)};
+  }
+
+  /// A framebuffer with random colours, depths and stencil values.
+  Framebuffer framebuffer(glm::ivec2 s) {
+    Framebuffer fb;
+    fb.resize(s.x, s.y);
+    fb.clear_color(color(0.0f));
+    bool noisy = chance(0.3);
+    for (float& d : fb.depth) d = noisy ? uniform(0.3f, 1.0f) : 1.0f;
+    for (std::uint8_t& v : fb.stencil) v = std::uint8_t(integer(0, 3));
+    if (chance(0.3)) {
+      for (std::uint8_t& c : fb.color) c = std::uint8_t(integer(0, 255));
+    }
+    return fb;
+  }
+
+  RandomDraw draw(glm::ivec2 fb_size) {
+    RandomDraw d;
+    mesh(d);
+    attributes(d);
+    d.projection = projection(float(fb_size.x) / float(fb_size.y));
+    d.viewport = viewport(fb_size);
+    fragment_state(d);
+    shade_state(d);
+    return d;
+  }
+
+ private:
+  void add_triangle(RandomDraw& d, glm::vec3 centre, float size) {
+    auto base = std::uint32_t(d.positions.size());
+    for (int k = 0; k < 3; ++k) d.positions.push_back(glm::vec4(centre + unit() * size, 1.0f));
+    d.triangles.push_back({base, base + 1, base + 2});
+  }
+
+  glm::vec3 somewhere() { return {uniform(-3, 3), uniform(-2.5f, 2.5f), uniform(-14, 0.5f)}; }
+
+  void soup(RandomDraw& d) {
+    int n = integer(1, 60);
+    const float sizes[] = {0.002f, 0.02f, 0.2f, 1.0f, 8.0f};
+    for (int i = 0; i < n; ++i) add_triangle(d, somewhere(), sizes[integer(0, 4)] * uniform(0.3f, 1));
+    if (chance(0.3)) {  // degenerate: repeated and collinear vertices
+      auto base = std::uint32_t(d.positions.size());
+      glm::vec3 p = somewhere(), q = somewhere();
+      d.positions.push_back(glm::vec4(p, 1));
+      d.positions.push_back(glm::vec4(q, 1));
+      d.positions.push_back(glm::vec4(0.5f * (p + q), 1));
+      d.triangles.push_back({base, base + 1, base + 2});
+      d.triangles.push_back({base, base, base + 1});
+    }
+  }
+
+  // A closed sphere or a flat grid with shared vertices (shared edges, no cracks allowed).
+  void shared_mesh(RandomDraw& d) {
+    glm::vec3 c = somewhere();
+    float r = uniform(0.05f, 3.0f);
+    int cols = integer(3, 24), rows = integer(2, 16);
+    bool sphere = chance(0.6);
+    auto base = std::uint32_t(d.positions.size());
+    for (int j = 0; j <= rows; ++j) {
+      for (int i = 0; i <= cols; ++i) {
+        float u = float(i) / cols, v = float(j) / rows;
+        glm::vec3 p = sphere ? glm::vec3(std::sin(v * 3.14159f) * std::cos(u * 6.28318f), std::cos(v * 3.14159f),
+                                         std::sin(v * 3.14159f) * std::sin(u * 6.28318f))
+                             : glm::vec3(u * 2 - 1 + uniform(-0.01f, 0.01f), v * 2 - 1, 0.0f);
+        d.positions.push_back(glm::vec4(c + p * r, 1.0f));
+      }
+    }
+    auto at = [&](int i, int j) { return base + std::uint32_t(j * (cols + 1) + i); };
+    for (int j = 0; j < rows; ++j) {
+      for (int i = 0; i < cols; ++i) {
+        d.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        d.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    }
+  }
+
+  void mesh(RandomDraw& d) {
+    int parts = integer(1, 3);
+    for (int i = 0; i < parts; ++i) chance(0.5) ? soup(d) : shared_mesh(d);
+    if (chance(0.15)) {  // homogeneous positions: the same points with w != 1
+      for (glm::vec4& p : d.positions) p *= uniform(0.5f, 2.0f);
+    }
+    if (chance(0.05)) d.triangles.push_back({0, 0, std::uint32_t(d.positions.size() + 5)});
+  }
+
+  void attributes(RandomDraw& d) {
+    std::size_t n = d.positions.size();
+    bool unit_normals = chance(0.8);
+    for (std::size_t i = 0; i < n; ++i) d.normals.push_back(unit() * (unit_normals ? 1.0f : uniform(0, 2)));
+    if (chance(0.1)) d.normals.clear();
+    if (chance(0.5)) for (std::size_t i = 0; i < n; ++i) d.colors.push_back(color(0.1f));
+    if (chance(0.2)) for (std::size_t i = 0; i < n; ++i) d.back_colors.push_back(color(0.1f));
+    if (chance(0.2)) for (std::size_t i = 0; i < n; ++i) d.secondary.push_back(glm::vec3(color()));
+    if (chance(0.1)) for (std::size_t i = 0; i < n; ++i) d.back_secondary.push_back(glm::vec3(color()));
+    if (chance(0.8)) for (std::size_t i = 0; i < n; ++i) d.texcoords.push_back({uniform(-2, 3), uniform(-2, 3)});
+    d.constant_color = color(0.1f);
+  }
+
+  glm::mat4 projection(float aspect) {
+    if (chance(0.25)) {
+      float h = uniform(1, 6);
+      return glm::ortho(-h * aspect, h * aspect, -h, h, uniform(-1, 1), uniform(5, 20));
+    }
+    return glm::perspective(glm::radians(uniform(15, 100)), aspect, uniform(0.05f, 1.5f), uniform(8, 100));
+  }
+
+  Viewport viewport(glm::ivec2 s) {
+    Viewport vp{0, 0, s.x, s.y, 0.0f, 1.0f};
+    if (chance(0.25)) {
+      vp = {integer(-s.x / 2, s.x / 2), integer(-s.y / 2, s.y / 2), integer(1, 2 * s.x), integer(1, 2 * s.y)};
+    }
+    if (chance(0.2)) {
+      vp.near_depth = uniform(0, 1);
+      vp.far_depth = uniform(0, 1);
+    }
+    return vp;
+  }
+
+  CompareFunc compare_func() { return CompareFunc(integer(0, 7)); }
+
+  BlendFactor blend_factor() {
+    if (chance(0.5)) return chance(0.5) ? BlendFactor::kSrcAlpha : BlendFactor::kOneMinusSrcAlpha;
+    return BlendFactor(integer(0, 10));
+  }
+
+  void fragment_state(RandomDraw& d) {
+    FragmentState& f = d.frag;
+    f.cull = CullMode(integer(0, 2));
+    f.front_ccw = chance(0.8);
+    f.depth_test = chance(0.85);
+    f.depth_func = chance(0.6) ? CompareFunc::kLess : compare_func();
+    f.depth_write = chance(0.85);
+    f.blend = {chance(0.3), blend_factor(), blend_factor()};
+    if (chance(0.1)) for (bool& m : f.color_mask) m = chance(0.5);
+    if (chance(0.15)) {
+      f.stencil = {true, compare_func(), std::uint8_t(integer(0, 3)), std::uint8_t(integer(0, 255)),
+                   std::uint8_t(integer(0, 255)), StencilOp(integer(0, 5)), StencilOp(integer(0, 5)),
+                   StencilOp(integer(0, 5))};
+    }
+    if (chance(0.1)) {
+      f.polygon_offset = true;
+      f.offset_factor = uniform(-2, 2);
+      f.offset_units = uniform(-8, 8);
+    }
+    d.capture = chance(0.05);
+  }
+
+  Light light() {
+    Light l;
+    l.ambient = color() * uniform(0, 0.4f);
+    l.diffuse = color();
+    l.specular = color();
+    glm::vec3 p = glm::vec3(uniform(-6, 6), uniform(-6, 6), uniform(-12, 6));
+    int kind = integer(0, 2);  // directional, point, spot
+    l.position = kind == 0 ? glm::vec4(unit(), 0.0f) : glm::vec4(p, 1.0f) * (chance(0.2) ? 2.0f : 1.0f);
+    if (kind == 2 || chance(0.05)) {
+      l.spot_direction = chance(0.05) ? glm::vec3(0.0f) : unit() * uniform(0.5f, 2);
+      l.spot_cutoff = uniform(5, 90);
+      l.spot_exponent = chance(0.3) ? 0.0f : uniform(0, 128);
+    }
+    if (kind != 0 && chance(0.7)) {
+      l.constant_attenuation = chance(0.05) ? 0.0f : uniform(0, 2);
+      l.linear_attenuation = uniform(0, 0.5f);
+      l.quadratic_attenuation = uniform(0, 0.2f);
+    }
+    l.enabled = chance(0.9);
+    return l;
+  }
+
+  Material material() {
+    Material m;
+    m.ambient = color();
+    m.diffuse = color(chance(0.5) ? 1.0f : 0.1f);
+    m.specular = color();
+    m.emission = chance(0.3) ? color() * 0.3f : glm::vec4(0, 0, 0, 1);
+    m.shininess = chance(0.1) ? 0.0f : uniform(0, 128);
+    m.specular_model = chance(0.3) ? SpecularModel::kPhong : SpecularModel::kBlinn;
+    if (chance(0.15)) {
+      m.diffuse_model = DiffuseModel::kOrenNayar;
+      m.roughness = chance(0.3) ? 0.0f : uniform(0, 1);
+    }
+    return m;
+  }
+
+  std::shared_ptr<Texture> texture() {
+    auto t = std::make_shared<Texture>();
+    TextureLevel level;
+    level.width = 1 << integer(0, 4);
+    level.height = 1 << integer(0, 4);
+    for (int i = 0; i < level.width * level.height * 4; ++i) level.rgba.push_back(std::uint8_t(integer(0, 255)));
+    t->levels.push_back(level);
+    if (chance(0.7)) generate_mipmaps(*t);
+    t->format = TextureFormat(integer(0, 5));
+    t->wrap_s = TextureWrap(integer(0, 2));
+    t->wrap_t = TextureWrap(integer(0, 2));
+    t->min_filter = TextureFilter(integer(0, 5));
+    t->mag_filter = chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
+    t->env_color = color();
+    return t;
+  }
+
+  // A small hand-made shadow map seen through the draw's own projection.
+  ShadowMap shadow_map(const glm::mat4& projection) {
+    ShadowMap m;
+    m.size = 4;
+    m.faces.push_back({projection, {}});
+    for (int i = 0; i < 16; ++i) m.faces[0].depth.push_back(uniform(0.2f, 1.0f));
+    m.texel_at_unit = 0.05f;
+    m.bias = chance(0.5) ? -1.0f : 0.001f;
+    m.pcf = integer(0, 1);
+    return m;
+  }
+
+  void shade_state(RandomDraw& d) {
+    ShadeState& s = d.shade;
+    s.lighting = chance(0.75);
+    s.shading = ShadingMode(integer(0, 2));
+    s.model.ambient = color() * 0.3f;
+    s.model.local_viewer = chance(0.3);
+    s.model.two_side = chance(0.3);
+    s.model.separate_specular = chance(0.3);
+    int n = chance(0.1) ? 0 : integer(1, 8);
+    for (int i = 0; i < n; ++i) d.lights.push_back(light());
+    s.lights = d.lights;
+    s.front = material();
+    s.back = material();
+    if (!d.texcoords.empty() && chance(0.25)) d.texture = texture();
+    s.texture = d.texture.get();
+    s.texture_env = TextureEnvMode(integer(0, 3));
+    if (chance(0.1)) {
+      for (std::size_t i = 0; i < d.lights.size(); ++i) d.shadow_maps.push_back(shadow_map(d.projection));
+      s.shadow_maps = d.shadow_maps;
+    }
+  }
+
+  std::mt19937 rng_;
+};
+
+}  // namespace shadelab::test
