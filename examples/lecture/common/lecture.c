@@ -1,0 +1,70 @@
+/* Shared helper of the lecture's examples (see lecture.h). */
+#include "lecture.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <stb_image_write.h>
+
+int lecture_begin(LectureImage* img, int argc, char** argv, const char* default_name, int width,
+                  int height) {
+  img->path = default_name;
+  for (int i = 1; i < argc; ++i) {
+    if (strncmp(argv[i], "--", 2) == 0) {
+      ++i; /* skip the option's value */
+      continue;
+    }
+    img->path = argv[i];
+    break;
+  }
+  img->width = width;
+  img->height = height;
+  img->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  img->buffer = (unsigned char*)calloc((size_t)width * height * 4, 1);
+  if (!img->ctx || !img->buffer ||
+      !OSMesaMakeCurrent(img->ctx, img->buffer, GL_UNSIGNED_BYTE, width, height)) {
+    fprintf(stderr, "cannot create an OSMesa context\n");
+    return 0;
+  }
+  glViewport(0, 0, width, height);
+  return 1;
+}
+
+int lecture_end(LectureImage* img) {
+  glFinish();
+  GLenum error = glGetError();
+  int rc = 0;
+  if (error != GL_NO_ERROR) {
+    fprintf(stderr, "GL error 0x%04x\n", (unsigned)error);
+    rc = 3;
+  }
+  stbi_flip_vertically_on_write(1);
+  if (!stbi_write_png(img->path, img->width, img->height, 4, img->buffer, img->width * 4)) {
+    fprintf(stderr, "cannot write %s\n", img->path);
+    rc = 2;
+  } else {
+    printf("wrote %s (%dx%d)\n", img->path, img->width, img->height);
+  }
+  OSMesaDestroyContext(img->ctx);
+  free(img->buffer);
+  return rc;
+}
+
+const char* lecture_option(int argc, char** argv, const char* name) {
+  for (int i = 1; i + 1 < argc; ++i)
+    if (strcmp(argv[i], name) == 0) return argv[i + 1];
+  return NULL;
+}
+
+void lecture_perspective(double fovy_degrees, double aspect, double z_near, double z_far) {
+  double top = z_near * tan(fovy_degrees * 3.14159265358979323846 / 360.0);
+  glFrustum(-top * aspect, top * aspect, -top, top, z_near, z_far);
+}
+
+double lecture_panel(const LectureImage* img, int index, int count, int row, int rows) {
+  int w = img->width / count, h = img->height / rows;
+  glViewport(index * w, img->height - (row + 1) * h, w, h);
+  return (double)w / h;
+}

@@ -1,0 +1,176 @@
+// Vertex arrays (GL 1.1 section 2.8): the four array pointers, glArrayElement, glDrawArrays and
+// glDrawElements. Each element becomes current attributes plus a vertex, exactly as the
+// equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest.
+#include <cstring>
+
+#include "gl/src/convert.hpp"
+#include "gl/src/draw.hpp"
+#include "gl/src/primitive.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+int type_size(GLenum type) {
+  switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: return 2;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+  }
+}
+
+template <class T>
+T load(const unsigned char* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);  // arrays need not be aligned
+  return v;
+}
+
+// Component k of element i. `normalized`: integers map to [0, 1] (unsigned) or [-1, 1]
+// (signed) as colours and normals do (GL 1.1 table 2.6); otherwise they convert directly.
+double component(const ClientArray& a, std::size_t i, int k, bool normalized) {
+  std::size_t size = std::size_t(type_size(a.type));
+  std::size_t stride = a.stride ? std::size_t(a.stride) : size * std::size_t(a.size);
+  const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + i * stride + std::size_t(k) * size;
+  switch (a.type) {
+    case GL_BYTE: { double v = load<GLbyte>(p); return normalized ? (2 * v + 1) / 255.0 : v; }
+    case GL_UNSIGNED_BYTE: { double v = load<GLubyte>(p); return normalized ? v / 255.0 : v; }
+    case GL_SHORT: { double v = load<GLshort>(p); return normalized ? (2 * v + 1) / 65535.0 : v; }
+    case GL_UNSIGNED_SHORT: { double v = load<GLushort>(p); return normalized ? v / 65535.0 : v; }
+    case GL_INT: { double v = load<GLint>(p); return normalized ? (2 * v + 1) / 4294967295.0 : v; }
+    case GL_UNSIGNED_INT: { double v = load<GLuint>(p); return normalized ? v / 4294967295.0 : v; }
+    case GL_FLOAT: return load<GLfloat>(p);
+    case GL_DOUBLE: return load<GLdouble>(p);
+    default: return 0.0;
+  }
+}
+
+bool usable(const ClientArray& a) { return a.enabled && a.pointer; }
+
+// Up to four components of element i, the missing ones taken from `fill`.
+glm::vec4 fetch(const ClientArray& a, std::size_t i, glm::vec4 fill, bool normalized) {
+  for (int k = 0; k < a.size && k < 4; ++k) fill[k] = float(component(a, i, k, normalized));
+  return fill;
+}
+
+// glArrayElement's effect (GL 1.1 section 2.8): attributes first, the vertex last.
+void array_element(GlContext& c, std::size_t i) {
+  const ClientArrays& a = c.arrays;
+  if (usable(a.normal)) c.current.normal = glm::vec3(fetch(a.normal, i, glm::vec4(0.0f), true));
+  if (usable(a.color)) {
+    c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), true);
+    apply_color_material(c);
+  }
+  if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false);
+  if (usable(a.vertex) && c.prim.active) emit_vertex(c, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false));
+}
+
+// A whole primitive from array elements. The current attributes and material are restored
+// afterwards: GL leaves them indeterminate, and Mesa leaves them unchanged.
+template <class IndexOf>
+void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of) {
+  if (!usable(c.arrays.vertex)) return;
+  CurrentAttribs saved = c.current;
+  Material front = c.lighting.front, back = c.lighting.back;
+  begin_primitive(c, mode);
+  for (std::size_t k = 0; k < count; ++k) array_element(c, index_of(k));
+  end_primitive(c);
+  c.current = saved;
+  c.lighting.front = front, c.lighting.back = back;
+}
+
+bool valid_type(GLenum type, std::initializer_list<GLenum> allowed) {
+  for (GLenum t : allowed) {
+    if (t == type) return true;
+  }
+  return false;
+}
+
+void set_pointer(ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
+                 int min_size, int max_size, std::initializer_list<GLenum> types) {
+  outside_begin_end([&](GlContext& c) {
+    if (size < min_size || size > max_size || stride < 0) return c.set_error(GL_INVALID_VALUE);
+    if (!valid_type(type, types)) return c.set_error(GL_INVALID_ENUM);
+    a = {a.enabled, size, type, stride, ptr};
+  });
+}
+
+ClientArray* array_of(GlContext* c, int which) {
+  if (!c) return nullptr;
+  switch (which) {
+    case 0: return &c->arrays.vertex;
+    case 1: return &c->arrays.normal;
+    case 2: return &c->arrays.color;
+    default: return &c->arrays.texcoord;
+  }
+}
+
+}  // namespace
+}  // namespace shadelab::gl
+
+using namespace shadelab::gl;
+
+extern "C" {
+
+void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  if (ClientArray* a = array_of(current_context(), 0)) {
+    set_pointer(*a, size, type, stride, ptr, 2, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  }
+}
+
+void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
+  if (ClientArray* a = array_of(current_context(), 1)) {
+    set_pointer(*a, 3, type, stride, ptr, 3, 3, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  }
+}
+
+void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  if (ClientArray* a = array_of(current_context(), 2)) {
+    set_pointer(*a, size, type, stride, ptr, 3, 4,
+                {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
+                 GL_FLOAT, GL_DOUBLE});
+  }
+}
+
+void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
+  if (ClientArray* a = array_of(current_context(), 3)) {
+    set_pointer(*a, size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  }
+}
+
+// Legal between glBegin and glEnd; outside them it only sets the current attributes.
+void GLAPIENTRY glArrayElement(GLint i) {
+  with_context([&](GlContext& c) {
+    if (i < 0) return c.set_error(GL_INVALID_VALUE);
+    array_element(c, std::size_t(i));
+  });
+}
+
+void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
+  outside_begin_end([&](GlContext& c) {
+    if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
+    if (first < 0 || count < 0) return c.set_error(GL_INVALID_VALUE);
+    draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
+  });
+}
+
+// Indices are used as given: like GL, shadelab cannot know how long the caller's arrays are.
+void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
+  outside_begin_end([&](GlContext& c) {
+    if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
+    if (count < 0) return c.set_error(GL_INVALID_VALUE);
+    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+      return c.set_error(GL_INVALID_ENUM);
+    }
+    if (!indices) return count == 0 ? void() : c.set_error(GL_INVALID_VALUE);
+    const auto* bytes = static_cast<const unsigned char*>(indices);
+    draw_elements(c, mode, std::size_t(count), [&](std::size_t k) -> std::size_t {
+      if (type == GL_UNSIGNED_BYTE) return bytes[k];
+      if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
+      return load<GLuint>(bytes + 4 * k);
+    });
+  });
+}
+
+}  // extern "C"

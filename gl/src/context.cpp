@@ -1,0 +1,59 @@
+// GlContext construction with OpenGL 1.1's initial state, the thread's current context, and
+// colour-material tracking. Entry points live in the other files; nothing here draws.
+#include "gl/src/context.hpp"
+
+#include <cstdlib>
+#include <string_view>
+
+namespace shadelab::gl {
+
+GlContext::GlContext(GLenum format, int depth, int stencil, std::shared_ptr<TextureNames> shared)
+    : buffer_format(format), depth_bits(depth), stencil_bits(stencil) {
+  for (int i = 0; i < kMaxLights; ++i) {
+    lighting.lights[std::size_t(i)] = default_light(i);
+    lighting.lights[std::size_t(i)].enabled = false;  // every GL_LIGHTi starts disabled
+  }
+  // GL's default back material equals the front one; both are Material's defaults.
+  textures.default_texture = std::make_shared<TextureObject>();
+  textures.bound = textures.default_texture;
+  textures.names = shared ? std::move(shared) : std::make_shared<TextureNames>();
+  const char* reference = std::getenv("SHADELAB_REFERENCE");
+  use_reference = reference && *reference && std::string_view(reference) != "0";
+}
+
+MatrixStack& GlContext::current_stack() {
+  switch (matrix_mode) {
+    case GL_PROJECTION: return projection;
+    case GL_TEXTURE: return texture_matrix;
+    default: return modelview;
+  }
+}
+
+GlContext*& current_context() {
+  static thread_local GlContext* current = nullptr;
+  return current;
+}
+
+namespace {
+
+void track(Material& m, GLenum mode, const glm::vec4& color) {
+  switch (mode) {
+    case GL_AMBIENT: m.ambient = color; break;
+    case GL_DIFFUSE: m.diffuse = color; break;
+    case GL_SPECULAR: m.specular = color; break;
+    case GL_EMISSION: m.emission = color; break;
+    case GL_AMBIENT_AND_DIFFUSE: m.ambient = m.diffuse = color; break;
+    default: break;
+  }
+}
+
+}  // namespace
+
+void apply_color_material(GlContext& c) {
+  LightingState& l = c.lighting;
+  if (!l.color_material) return;
+  if (l.color_material_face != GL_BACK) track(l.front, l.color_material_mode, c.current.color);
+  if (l.color_material_face != GL_FRONT) track(l.back, l.color_material_mode, c.current.color);
+}
+
+}  // namespace shadelab::gl

@@ -1,0 +1,267 @@
+// GlContext: all the state of one OpenGL 1.1 context (the GL 1.1 specification's state
+// tables, chapter 6), its framebuffer and the caller's OSMesa buffer. Plain data plus the error
+// rule; the gl* entry points change it, draw.cpp hands primitives to the core pipeline.
+// No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "shadelab/light.hpp"
+#include "shadelab/material.hpp"
+#include "shadelab/pipeline.hpp"
+#include "shadelab/texture.hpp"
+
+namespace shadelab::gl {
+
+// Implementation limits, reported through glGet. Stack depths are Mesa's; lights are more
+// than Mesa's 8 because the lecture's night scene uses 16 spot lights.
+inline constexpr int kMaxLights = 32;
+inline constexpr int kMaxModelviewDepth = 32;
+inline constexpr int kMaxProjectionDepth = 32;
+inline constexpr int kMaxTextureStackDepth = 10;
+inline constexpr int kMaxTextureSize = 8192;
+inline constexpr int kMaxViewportDim = 16384;
+inline constexpr int kMaxBufferDim = 16384;  // OSMESA_MAX_WIDTH / OSMESA_MAX_HEIGHT
+
+struct MatrixStack {
+  std::vector<glm::mat4> entries{glm::mat4(1.0f)};
+  std::size_t max_depth = 32;
+  glm::mat4& top() { return entries.back(); }
+  const glm::mat4& top() const { return entries.back(); }
+};
+
+/// Lighting state (GL 1.1 section 2.13). Lights are stored in eye space, as glLight left
+/// them; Light::enabled is GL_LIGHTi.
+struct LightingState {
+  bool enabled = false;  // GL_LIGHTING
+  std::array<Light, kMaxLights> lights;
+  LightModel model;
+  Material front, back;
+  bool color_material = false;
+  GLenum color_material_face = GL_FRONT_AND_BACK;
+  GLenum color_material_mode = GL_AMBIENT_AND_DIFFUSE;
+  bool normalize = false;
+  bool rescale_normal = false;
+  GLenum shade_model = GL_SMOOTH;
+};
+
+/// The current vertex attributes (GL 1.1 section 2.7), in object space.
+struct CurrentAttribs {
+  glm::vec4 color{1.0f};
+  glm::vec3 normal{0.0f, 0.0f, 1.0f};
+  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+/// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
+/// returns); draw.cpp translates them into the core's FragmentState.
+struct RasterState {
+  Viewport viewport;
+  bool depth_test = false;
+  GLenum depth_func = GL_LESS;
+  bool depth_mask = true;
+  bool blend = false;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  bool cull = false;
+  GLenum cull_mode = GL_BACK;
+  GLenum front_face = GL_CCW;
+  std::array<bool, 4> color_mask{true, true, true, true};
+  bool stencil_test = false;
+  GLenum stencil_func = GL_ALWAYS;
+  GLint stencil_ref = 0;
+  GLuint stencil_value_mask = 0xff, stencil_write_mask = 0xff;
+  GLenum stencil_fail = GL_KEEP, stencil_zfail = GL_KEEP, stencil_zpass = GL_KEEP;
+  bool polygon_offset_fill = false;
+  float offset_factor = 0.0f, offset_units = 0.0f;
+  glm::vec4 clear_color{0.0f};
+  double clear_depth = 1.0;
+  GLint clear_stencil = 0;
+  bool dither = true;  // accepted and reported; shadelab never dithers (nor does llvmpipe)
+};
+
+/// Capabilities that are accepted and reported but change nothing shadelab draws (they only
+/// affect points and lines, which are not rasterized).
+struct InertCaps {
+  bool point_smooth = false, line_smooth = false, line_stipple = false;
+  bool offset_point = false, offset_line = false;
+};
+
+struct TextureObject {
+  Texture texture;
+  std::vector<GLint> internal_formats;  // per level, as given to glTexImage2D
+  glm::vec4 border_color{0.0f};         // stored; the core samples a black border
+  float priority = 1.0f;
+};
+
+/// Texture objects by name; shared between contexts created with a sharelist.
+struct TextureNames {
+  std::unordered_map<GLuint, std::shared_ptr<TextureObject>> objects;
+  GLuint next_name = 1;
+};
+
+struct TextureState {
+  bool enabled_2d = false;     // GL_TEXTURE_2D
+  GLuint bound_name = 0;
+  std::shared_ptr<TextureObject> bound;  // the default texture when bound_name is 0
+  std::shared_ptr<TextureObject> default_texture;
+  std::shared_ptr<TextureNames> names;
+  GLenum env_mode = GL_MODULATE;
+  glm::vec4 env_color{0.0f};
+};
+
+/// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
+struct PixelStore {
+  GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
+  bool swap_bytes = false, lsb_first = false;
+};
+
+struct ClientArray {
+  bool enabled = false;
+  GLint size = 4;
+  GLenum type = GL_FLOAT;
+  GLsizei stride = 0;
+  const void* pointer = nullptr;
+};
+
+struct ClientArrays {
+  ClientArray vertex, normal{false, 3}, color, texcoord;
+  bool index_enabled = false, edge_flag_enabled = false;  // accepted, unused
+};
+
+/// One vertex of a primitive being specified: eye-space position and its colours, lit as
+/// the vertex arrived (lighting state cannot change between glBegin and glEnd).
+struct PrimitiveVertex {
+  glm::vec4 eye;
+  glm::vec4 front, back;
+  glm::vec3 front_secondary, back_secondary;
+  glm::vec2 texcoord;
+};
+
+/// The primitive between glBegin and glEnd, with what stays fixed while it is specified.
+struct Primitive {
+  bool active = false;  // inside glBegin/glEnd
+  GLenum mode = GL_TRIANGLES;
+  std::vector<PrimitiveVertex> vertices;
+  bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
+  // Fixed at glBegin:
+  glm::mat4 modelview{1.0f};
+  glm::mat3 normal_matrix{1.0f};
+  float rescale = 1.0f;
+  bool identity_texture_matrix = true;
+  glm::mat4 texture_matrix{1.0f};
+  std::vector<Light> lights;  // enabled lights only
+};
+
+/// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
+struct UserBuffer {
+  void* data = nullptr;
+  int width = 0, height = 0;
+  int row_length = 0;  // pixels per row; 0: width
+  bool y_up = true;    // row 0 is the bottom row
+  GLenum format = GL_RGBA;
+};
+
+/// A rectangle of the framebuffer not yet copied to the caller's buffer.
+struct DirtyRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1)
+  bool empty() const { return x0 >= x1 || y0 >= y1; }
+};
+
+struct GlContext {
+  // Creation parameters
+  GLenum buffer_format = GL_RGBA;
+  int depth_bits = 24, stencil_bits = 8;
+
+  GLenum error = GL_NO_ERROR;
+  LightingState lighting;
+  CurrentAttribs current;
+  RasterState raster;
+  InertCaps inert;
+  TextureState textures;
+  PixelStore pack, unpack;
+  ClientArrays arrays;
+  Primitive prim;
+  std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+                              GL_DONT_CARE};
+
+  GLenum matrix_mode = GL_MODELVIEW;
+  MatrixStack modelview{{glm::mat4(1.0f)}, kMaxModelviewDepth};
+  MatrixStack projection{{glm::mat4(1.0f)}, kMaxProjectionDepth};
+  MatrixStack texture_matrix{{glm::mat4(1.0f)}, kMaxTextureStackDepth};
+
+  Framebuffer fb;
+  /// The fast pipeline's threads and buffers, made at the first draw and kept for the
+  /// context's life; null with SHADELAB_REFERENCE set (the reference pipeline draws).
+  std::unique_ptr<PipelineContext> pipeline;
+  bool use_reference = false;
+  UserBuffer user;
+  DirtyRect dirty;
+  bool ever_current = false;  // the first OSMesaMakeCurrent sets the viewport
+  std::vector<std::uint8_t> depth_export;  // OSMesaGetDepthBuffer's copy
+  bool depth_exported = false;
+
+  GlContext(GLenum format, int depth, int stencil, std::shared_ptr<TextureNames> shared);
+
+  /// Records `code` unless an earlier error is still unread (GL 1.1 section 2.5).
+  void set_error(GLenum code) {
+    if (error == GL_NO_ERROR) error = code;
+  }
+  MatrixStack& current_stack();
+};
+
+/// The context current in this thread (nullptr when none).
+GlContext*& current_context();
+
+/// Runs `f(ctx)` on the current context, if any; exceptions (out of memory) become
+/// GL_OUT_OF_MEMORY so that nothing unwinds into C callers.
+template <class F>
+void with_context(F&& f) noexcept {
+  GlContext* c = current_context();
+  if (!c) return;
+  try {
+    f(*c);
+  } catch (...) {
+    c->set_error(GL_OUT_OF_MEMORY);
+  }
+}
+
+/// As with_context, for calls that GL forbids between glBegin and glEnd (GL 1.1 section 2.6.3):
+/// there they only record GL_INVALID_OPERATION.
+template <class F>
+void outside_begin_end(F&& f) noexcept {
+  with_context([&](GlContext& c) {
+    if (c.prim.active) {
+      c.set_error(GL_INVALID_OPERATION);
+      return;
+    }
+    f(c);
+  });
+}
+
+/// Copies the dirty part of the framebuffer into the caller's buffer (present.cpp).
+void present(GlContext& c);
+/// Refreshes `depth_export` from the framebuffer's depth (and stencil) in Mesa's layout.
+void export_depth(GlContext& c);
+/// Marks a window-space rectangle as changed (clamped to the framebuffer).
+void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1);
+
+/// The flag behind a glEnable capability (nullptr: not accepted) and behind a client array.
+bool* capability_flag(GlContext& c, GLenum cap);
+bool* client_capability_flag(GlContext& c, GLenum cap);
+
+/// Applies the current colour to the material parameters glColorMaterial selects, when
+/// GL_COLOR_MATERIAL is on (GL 1.1 section 2.13.3).
+void apply_color_material(GlContext& c);
+
+}  // namespace shadelab::gl

@@ -1,0 +1,39 @@
+// Number conversions that OpenGL defines between its argument types: integer colours to
+// floats (GL 1.1 table 2.6), floats back to integers for glGet (section 6.1.2), and the
+// clamping shadelab applies so that no value can make the pipeline misbehave. No state.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace shadelab::gl {
+
+/// A signed integer colour component mapped linearly to [-1, 1]: (2c + 1) / (2^32 - 1).
+inline float int_to_color(GLint i) { return float((2.0 * double(i) + 1.0) / 4294967295.0); }
+
+/// The inverse mapping for glGet of colours, normals and depth values: [-1, 1] to the full
+/// integer range (values outside are clamped), truncated as Mesa does.
+inline GLint color_to_int(double f) {
+  if (!(f == f)) return 0;
+  return GLint(std::clamp(f, -1.0, 1.0) * 2147483647.0);
+}
+
+/// Other floating-point state as an integer: rounded to the nearest, clamped to GLint.
+inline GLint round_to_int(double f) {
+  if (!(f == f)) return 0;
+  double r = std::floor(f + 0.5);
+  r = std::clamp(r, double(std::numeric_limits<GLint>::min()),
+                 double(std::numeric_limits<GLint>::max()));
+  return GLint(r);
+}
+
+/// NaN becomes 0; everything else is kept (colours are clamped later).
+inline float finite_or_zero(float v) { return std::isnan(v) ? 0.0f : v; }
+
+/// Unsigned byte colour component to [0, 1].
+inline float ubyte_to_float(GLubyte v) { return float(v) / 255.0f; }
+
+}  // namespace shadelab::gl

@@ -1,0 +1,331 @@
+// Vertex processing and primitive submission: eye-space transformation, normal transformation
+// (inverse transpose, GL_RESCALE_NORMAL, GL_NORMALIZE), per-vertex lighting through the core's
+// light_point (GL 1.1 section 2.13), then triangles with pre-lit colours to draw_triangles.
+// Fragment work (clipping, rasterization, texturing, blending) is the core pipeline's.
+#include "gl/src/draw.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
+#include "gl/src/convert.hpp"
+#include "gl/src/primitive.hpp"
+#include "shadelab/lighting.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+glm::vec4 sanitize(glm::vec4 v) {
+  for (int i = 0; i < 4; ++i) v[i] = finite_or_zero(v[i]);
+  return v;
+}
+glm::vec3 sanitize(glm::vec3 v) {
+  for (int i = 0; i < 3; ++i) v[i] = finite_or_zero(v[i]);
+  return v;
+}
+
+CompareFunc compare_func(GLenum f) {
+  switch (f) {
+    case GL_NEVER: return CompareFunc::kNever;
+    case GL_LESS: return CompareFunc::kLess;
+    case GL_EQUAL: return CompareFunc::kEqual;
+    case GL_LEQUAL: return CompareFunc::kLequal;
+    case GL_GREATER: return CompareFunc::kGreater;
+    case GL_NOTEQUAL: return CompareFunc::kNotequal;
+    case GL_GEQUAL: return CompareFunc::kGequal;
+    default: return CompareFunc::kAlways;
+  }
+}
+
+StencilOp stencil_op(GLenum op) {
+  switch (op) {
+    case GL_ZERO: return StencilOp::kZero;
+    case GL_REPLACE: return StencilOp::kReplace;
+    case GL_INCR: return StencilOp::kIncr;
+    case GL_DECR: return StencilOp::kDecr;
+    case GL_INVERT: return StencilOp::kInvert;
+    default: return StencilOp::kKeep;
+  }
+}
+
+BlendFactor blend_factor(GLenum f) {
+  switch (f) {
+    case GL_ZERO: return BlendFactor::kZero;
+    case GL_SRC_COLOR: return BlendFactor::kSrcColor;
+    case GL_ONE_MINUS_SRC_COLOR: return BlendFactor::kOneMinusSrcColor;
+    case GL_DST_COLOR: return BlendFactor::kDstColor;
+    case GL_ONE_MINUS_DST_COLOR: return BlendFactor::kOneMinusDstColor;
+    case GL_SRC_ALPHA: return BlendFactor::kSrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::kOneMinusSrcAlpha;
+    case GL_DST_ALPHA: return BlendFactor::kDstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::kOneMinusDstAlpha;
+    case GL_SRC_ALPHA_SATURATE: return BlendFactor::kSrcAlphaSaturate;
+    default: return BlendFactor::kOne;
+  }
+}
+
+// The core's per-fragment state from GL's. Without a depth (stencil) buffer the depth
+// (stencil) test behaves as if disabled (GL 1.1 sections 4.1.5, 4.1.6).
+FragmentState fragment_state(const GlContext& c) {
+  const RasterState& r = c.raster;
+  FragmentState f;
+  f.cull = !r.cull ? CullMode::kNone : r.cull_mode == GL_FRONT ? CullMode::kFront : CullMode::kBack;
+  f.front_ccw = r.front_face == GL_CCW;
+  f.depth_test = r.depth_test && c.depth_bits > 0;
+  f.depth_func = compare_func(r.depth_func);
+  f.depth_write = r.depth_mask;
+  f.blend = {r.blend, blend_factor(r.blend_src), blend_factor(r.blend_dst)};
+  for (int i = 0; i < 4; ++i) f.color_mask[i] = r.color_mask[std::size_t(i)];
+  StencilState& s = f.stencil;
+  s.enabled = r.stencil_test && c.stencil_bits > 0;
+  s.func = compare_func(r.stencil_func);
+  s.ref = std::uint8_t(std::clamp(r.stencil_ref, 0, 255));
+  s.value_mask = std::uint8_t(r.stencil_value_mask & 0xffu);
+  s.write_mask = std::uint8_t(r.stencil_write_mask & 0xffu);
+  s.fail = stencil_op(r.stencil_fail);
+  s.depth_fail = stencil_op(r.stencil_zfail);
+  s.pass = stencil_op(r.stencil_zpass);
+  f.polygon_offset = r.polygon_offset_fill;
+  f.offset_factor = r.offset_factor;
+  f.offset_units = r.offset_units;
+  return f;
+}
+
+TextureEnvMode env_mode(GLenum mode) {
+  switch (mode) {
+    case GL_REPLACE: return TextureEnvMode::kReplace;
+    case GL_DECAL: return TextureEnvMode::kDecal;
+    case GL_BLEND: return TextureEnvMode::kBlend;
+    default: return TextureEnvMode::kModulate;
+  }
+}
+
+// The texture to apply, or nullptr (GL_TEXTURE_2D off, or an incomplete texture, which GL
+// 1.1 section 3.8.9 treats as texturing disabled).
+const Texture* active_texture(GlContext& c) {
+  TextureState& t = c.textures;
+  if (!t.enabled_2d || !t.bound || !t.bound->texture.complete()) return nullptr;
+  t.bound->texture.env_color = t.env_color;  // GL_TEXTURE_ENV_COLOR is context state
+  return &t.bound->texture;
+}
+
+// The eye-space normal GL lights with: inverse transpose of the modelview, then rescaled
+// (GL 1.2 equation 2.1) or normalized when enabled; otherwise left as it is.
+glm::vec3 eye_normal(const GlContext& c) {
+  const Primitive& p = c.prim;
+  glm::vec3 n = p.normal_matrix * c.current.normal;
+  if (c.lighting.normalize) {
+    float len = glm::length(n);
+    return len > 0.0f ? n / len : n;
+  }
+  return c.lighting.rescale_normal ? n * p.rescale : n;
+}
+
+void light_vertex(const GlContext& c, PrimitiveVertex& v) {
+  const LightingState& l = c.lighting;
+  if (!l.enabled) {
+    // Colours are clamped to [0, 1] per vertex (GL 1.1 section 2.13.6), before interpolation.
+    glm::vec4 col = glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f));
+    v.front = v.back = col;
+    v.front_secondary = v.back_secondary = glm::vec3(0.0f);
+    return;
+  }
+  glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
+  glm::vec3 n = eye_normal(c);
+  LitColor f = light_point(l.model, c.prim.lights, l.front, {pos, n, nullptr});
+  LitColor b = l.model.two_side ? light_point(l.model, c.prim.lights, l.back, {pos, -n, nullptr}) : f;
+  v.front = sanitize(f.primary);
+  v.back = sanitize(b.primary);
+  v.front_secondary = sanitize(f.secondary);
+  v.back_secondary = sanitize(b.secondary);
+}
+
+// (s, t) after the texture matrix; q divides per vertex (not per fragment, see docs/gl.md).
+glm::vec2 texcoord(const GlContext& c) {
+  glm::vec4 tc = c.current.texcoord;
+  if (!c.prim.identity_texture_matrix) tc = c.prim.texture_matrix * tc;
+  glm::vec2 st(tc);
+  if (tc.w != 1.0f && tc.w != 0.0f) st /= tc.w;
+  // Keep texel indices far from integer overflow in the sampler.
+  for (int i = 0; i < 2; ++i) st[i] = std::clamp(finite_or_zero(st[i]), -1e6f, 1e6f);
+  return st;
+}
+
+// Arrays for one draw_triangles call.
+struct Batch {
+  std::vector<glm::vec4> positions, colors, back_colors;
+  std::vector<glm::vec3> secondary, back_secondary;
+  std::vector<glm::vec2> texcoords;
+  std::vector<Triangle> triangles;
+
+  std::uint32_t add(const PrimitiveVertex& v) {
+    positions.push_back(v.eye);
+    colors.push_back(v.front);
+    back_colors.push_back(v.back);
+    secondary.push_back(v.front_secondary);
+    back_secondary.push_back(v.back_secondary);
+    texcoords.push_back(v.texcoord);
+    return std::uint32_t(positions.size() - 1);
+  }
+};
+
+// A triangle whose last vertex provokes it: rotated when the provoking vertex is one of its
+// three (rotation keeps the winding), else its last vertex is repeated with the provoking
+// vertex's colours (a quad's first triangle).
+Triangle flat_triangle(const PrimitiveTriangle& t, const std::vector<PrimitiveVertex>& verts,
+                       Batch& batch) {
+  const std::uint32_t* v = t.v;
+  if (v[0] == t.provoking) return {v[1], v[2], v[0]};
+  if (v[1] == t.provoking) return {v[2], v[0], v[1]};
+  if (v[2] == t.provoking) return {v[0], v[1], v[2]};
+  PrimitiveVertex copy = verts[v[2]];
+  const PrimitiveVertex& p = verts[t.provoking];
+  copy.front = p.front, copy.back = p.back;
+  copy.front_secondary = p.front_secondary, copy.back_secondary = p.back_secondary;
+  return {v[0], v[1], batch.add(copy)};
+}
+
+// Marks the window-space bounds of the batch's vertices (the whole viewport when a vertex
+// is behind the eye, as clipping may then reach any part of it).
+void mark_batch(GlContext& c, const glm::mat4& projection, const std::vector<glm::vec4>& eye) {
+  const Viewport& vp = c.raster.viewport;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  for (const glm::vec4& e : eye) {
+    glm::vec4 clip = projection * e;
+    if (!(clip.w > 0.0f)) {
+      x0 = y0 = -1e300, x1 = y1 = 1e300;
+      break;
+    }
+    double wx = (double(clip.x) / clip.w + 1.0) * 0.5 * vp.width + vp.x;
+    double wy = (double(clip.y) / clip.w + 1.0) * 0.5 * vp.height + vp.y;
+    x0 = std::min(x0, wx), x1 = std::max(x1, wx), y0 = std::min(y0, wy), y1 = std::max(y1, wy);
+  }
+  x0 = std::max(x0, double(vp.x)), y0 = std::max(y0, double(vp.y));
+  x1 = std::min(x1, double(vp.x) + vp.width), y1 = std::min(y1, double(vp.y) + vp.height);
+  if (x0 > x1 || y0 > y1) return;
+  mark_dirty(c, int(std::floor(x0)) - 1, int(std::floor(y0)) - 1, int(std::ceil(x1)) + 1,
+             int(std::ceil(y1)) + 1);
+}
+
+bool finite_clip(const glm::mat4& projection, const glm::vec4& eye) {
+  glm::vec4 clip = projection * eye;
+  return std::isfinite(clip.x) && std::isfinite(clip.y) && std::isfinite(clip.z) &&
+         std::isfinite(clip.w);
+}
+
+// Mesa's llvmpipe sends a draw through its draw pipeline, which splits quads along the other
+// diagonal, when some vertex of it lies outside the view volume (it needs clipping); measured
+// through OSMesa (tests/gl-conformance/programs/quad_split.c). Mesa merges consecutive
+// glBegin(GL_QUADS)/glEnd pairs into one draw; here each pair decides for itself.
+QuadSplit quad_split(const GlContext& c, const glm::mat4& projection, std::uint32_t count) {
+  for (std::uint32_t i = 0; i < count; ++i) {
+    glm::vec4 v = projection * c.prim.vertices[i].eye;
+    bool inside = -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
+    if (!inside) return QuadSplit::kFromSecond;
+  }
+  return QuadSplit::kFromFirst;
+}
+
+// Draws the first `count` vertices of the primitive.
+void draw_vertices(GlContext& c, std::uint32_t count) {
+  Primitive& p = c.prim;
+  if (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK) return;  // every polygon culled
+  const glm::mat4& projection = c.projection.top();
+  std::vector<PrimitiveTriangle> tris;
+  QuadSplit split = p.mode == GL_QUADS ? quad_split(c, projection, count) : QuadSplit::kFromFirst;
+  decompose(p.mode, count, p.odd_strip_start, split, tris);
+  if (tris.empty()) return;
+  Batch batch;
+  std::vector<bool> finite(count);
+  for (std::uint32_t i = 0; i < count; ++i) {
+    batch.add(p.vertices[i]);
+    finite[i] = finite_clip(projection, p.vertices[i].eye);
+  }
+  bool flat = c.lighting.shade_model == GL_FLAT;
+  for (const PrimitiveTriangle& t : tris) {
+    if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
+    batch.triangles.push_back(flat ? flat_triangle(t, p.vertices, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
+  }
+  if (batch.triangles.empty()) return;
+
+  ShadeState shade;
+  shade.lighting = false;  // colours were lit per vertex above
+  shade.shading = flat ? ShadingMode::kFlat : ShadingMode::kGouraud;
+  shade.texture = active_texture(c);
+  shade.texture_env = env_mode(c.textures.env_mode);
+  bool lit = c.lighting.enabled;
+  VertexInput in;
+  in.positions = batch.positions;
+  in.colors = batch.colors;
+  if (lit && c.lighting.model.two_side) in.back_colors = batch.back_colors;
+  if (lit && c.lighting.model.separate_specular) {
+    in.secondary_colors = batch.secondary;
+    if (c.lighting.model.two_side) in.back_secondary_colors = batch.back_secondary;
+  }
+  if (shade.texture) in.texcoords = batch.texcoords;
+  in.triangles = batch.triangles;
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+                 c.pipeline.get());
+  mark_batch(c, projection, batch.positions);
+}
+
+// Draws what can be drawn of a long primitive and keeps the vertices it still needs.
+void flush_part(GlContext& c) {
+  Primitive& p = c.prim;
+  PartialFlush f = partial_flush(p.mode, std::uint32_t(p.vertices.size()));
+  if (f.drawable < 3) return;
+  draw_vertices(c, f.drawable);
+  present(c);
+  if (p.mode == GL_TRIANGLE_STRIP && ((f.drawable - 2) & 1u)) p.odd_strip_start = !p.odd_strip_start;
+  std::vector<PrimitiveVertex> kept;
+  if (f.keep_first) kept.push_back(p.vertices.front());
+  kept.insert(kept.end(), p.vertices.end() - f.keep_last, p.vertices.end());
+  p.vertices = std::move(kept);
+}
+
+}  // namespace
+
+void begin_primitive(GlContext& c, GLenum mode) {
+  Primitive& p = c.prim;
+  p.active = true;
+  p.mode = mode;
+  p.vertices.clear();
+  p.odd_strip_start = false;
+  p.modelview = c.modelview.top();
+  glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
+  p.normal_matrix = glm::transpose(inv);
+  p.rescale = 1.0f / std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
+  p.texture_matrix = c.texture_matrix.top();
+  p.identity_texture_matrix = p.texture_matrix == glm::mat4(1.0f);
+  p.lights.clear();
+  if (c.lighting.enabled) {
+    for (const Light& l : c.lighting.lights) {
+      if (l.enabled) p.lights.push_back(l);
+    }
+  }
+}
+
+void emit_vertex(GlContext& c, const glm::vec4& object_position) {
+  Primitive& p = c.prim;
+  if (!is_polygon_mode(p.mode)) return;  // points and lines are accepted but not drawn
+  PrimitiveVertex v;
+  v.eye = p.modelview * object_position;
+  v.texcoord = texcoord(c);
+  light_vertex(c, v);
+  p.vertices.push_back(v);
+  if (p.vertices.size() >= kFlushVertices) flush_part(c);
+}
+
+void end_primitive(GlContext& c) {
+  Primitive& p = c.prim;
+  if (p.vertices.size() >= 3) draw_vertices(c, std::uint32_t(p.vertices.size()));
+  p.vertices.clear();
+  p.active = false;
+  present(c);
+}
+
+}  // namespace shadelab::gl

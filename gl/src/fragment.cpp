@@ -1,0 +1,157 @@
+// Per-fragment state and clearing (GL 1.1 sections 4.1-4.2): glDepthFunc, glDepthMask,
+// glColorMask, glBlendFunc, glStencil*, glCullFace, glFrontFace, glPolygonOffset, glClear*.
+// Stores state; the core pipeline applies it per fragment. glClear writes the framebuffer.
+#include <algorithm>
+#include <cstring>
+
+#include "gl/src/context.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+bool is_compare_func(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
+
+bool is_stencil_op(GLenum op) {
+  return op == GL_KEEP || op == GL_ZERO || op == GL_REPLACE || op == GL_INCR || op == GL_DECR ||
+         op == GL_INVERT;
+}
+
+// Every GL 1.1 blend factor is accepted as source and destination, as Mesa does.
+bool is_blend_factor(GLenum f) {
+  return f == GL_ZERO || f == GL_ONE || (f >= GL_SRC_COLOR && f <= GL_SRC_ALPHA_SATURATE);
+}
+
+float clamp01(float v) { return v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
+
+// The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3).
+void clear_color(GlContext& c) {
+  const auto& mask = c.raster.color_mask;
+  if (mask[0] && mask[1] && mask[2] && mask[3]) return c.fb.clear_color(c.raster.clear_color);
+  Framebuffer scratch;
+  scratch.color.resize(4);
+  scratch.clear_color(c.raster.clear_color);  // the core's float-to-byte rounding
+  for (std::size_t i = 0; i < c.fb.color.size(); i += 4) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      if (mask[k]) c.fb.color[i + k] = scratch.color[k];
+    }
+  }
+}
+
+void clear_stencil(GlContext& c) {
+  std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
+  std::uint8_t value = std::uint8_t(c.raster.clear_stencil & 0xff);
+  for (std::uint8_t& s : c.fb.stencil) s = std::uint8_t((s & ~write) | (value & write));
+}
+
+}  // namespace
+}  // namespace shadelab::gl
+
+using namespace shadelab::gl;
+
+extern "C" {
+
+void GLAPIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
+  outside_begin_end([&](GlContext& c) {
+    c.raster.clear_color = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
+  });
+}
+
+void GLAPIENTRY glClearDepth(GLclampd depth) {
+  outside_begin_end([&](GlContext& c) {
+    c.raster.clear_depth = depth == depth ? std::clamp(depth, 0.0, 1.0) : 0.0;
+  });
+}
+
+void GLAPIENTRY glClearStencil(GLint s) {
+  outside_begin_end([&](GlContext& c) { c.raster.clear_stencil = s; });
+}
+
+// Clears the whole framebuffer (shadelab has no scissor), through the colour, depth and
+// stencil write masks. The accumulation bit is accepted; there is no accumulation buffer.
+void GLAPIENTRY glClear(GLbitfield mask) {
+  outside_begin_end([&](GlContext& c) {
+    const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
+                             GL_ACCUM_BUFFER_BIT;
+    if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
+    if (mask & GL_COLOR_BUFFER_BIT) {
+      clear_color(c);
+      mark_dirty(c, 0, 0, c.fb.width, c.fb.height);
+    }
+    if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
+      c.fb.clear_depth(float(c.raster.clear_depth));
+    }
+    if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
+    present(c);
+  });
+}
+
+void GLAPIENTRY glDepthFunc(GLenum func) {
+  outside_begin_end([&](GlContext& c) {
+    if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
+    c.raster.depth_func = func;
+  });
+}
+
+void GLAPIENTRY glDepthMask(GLboolean flag) {
+  outside_begin_end([&](GlContext& c) { c.raster.depth_mask = flag != GL_FALSE; });
+}
+
+void GLAPIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  outside_begin_end([&](GlContext& c) { c.raster.color_mask = {r != 0, g != 0, b != 0, a != 0}; });
+}
+
+void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor) {
+  outside_begin_end([&](GlContext& c) {
+    if (!is_blend_factor(sfactor) || !is_blend_factor(dfactor)) return c.set_error(GL_INVALID_ENUM);
+    c.raster.blend_src = sfactor;
+    c.raster.blend_dst = dfactor;
+  });
+}
+
+void GLAPIENTRY glCullFace(GLenum mode) {
+  outside_begin_end([&](GlContext& c) {
+    if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return c.set_error(GL_INVALID_ENUM);
+    c.raster.cull_mode = mode;
+  });
+}
+
+void GLAPIENTRY glFrontFace(GLenum mode) {
+  outside_begin_end([&](GlContext& c) {
+    if (mode != GL_CW && mode != GL_CCW) return c.set_error(GL_INVALID_ENUM);
+    c.raster.front_face = mode;
+  });
+}
+
+// The reference is clamped to the stencil range [0, 255] (GL 1.1 section 4.1.4).
+void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask) {
+  outside_begin_end([&](GlContext& c) {
+    if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
+    c.raster.stencil_func = func;
+    c.raster.stencil_ref = std::clamp(ref, 0, 255);
+    c.raster.stencil_value_mask = mask;
+  });
+}
+
+void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) {
+  outside_begin_end([&](GlContext& c) {
+    if (!is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass)) {
+      return c.set_error(GL_INVALID_ENUM);
+    }
+    c.raster.stencil_fail = fail;
+    c.raster.stencil_zfail = zfail;
+    c.raster.stencil_zpass = zpass;
+  });
+}
+
+void GLAPIENTRY glStencilMask(GLuint mask) {
+  outside_begin_end([&](GlContext& c) { c.raster.stencil_write_mask = mask; });
+}
+
+void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units) {
+  outside_begin_end([&](GlContext& c) {
+    c.raster.offset_factor = factor;
+    c.raster.offset_units = units;
+  });
+}
+
+}  // extern "C"

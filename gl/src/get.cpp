@@ -1,0 +1,232 @@
+// glGetBooleanv/Integerv/Floatv/Doublev and glGetString (GL 1.1 sections 6.1.1-6.1.2,
+// 6.1.11): every query answers from one table of values with a kind, converted per the
+// spec's rules. Reads state only.
+#include <climits>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gl/src/context.hpp"
+#include "gl/src/convert.hpp"
+
+#ifndef SHADELAB_VERSION
+#define SHADELAB_VERSION "0"
+#endif
+
+namespace shadelab::gl {
+namespace {
+
+// How a value converts to the other query types (GL 1.1 section 6.1.2).
+enum class Kind {
+  kBool,
+  kInt,     // integers and enums
+  kFloat,   // rounded to the nearest integer by glGetIntegerv
+  kColor,   // colours, normals, depths: [-1, 1] maps to the whole integer range
+};
+
+struct Values {
+  double v[16] = {};
+  int n = 0;
+  Kind kind = Kind::kInt;
+
+  Values& add(double x) {
+    v[n++] = x;
+    return *this;
+  }
+};
+
+Values make(Kind k, std::initializer_list<double> xs) {
+  Values r;
+  r.kind = k;
+  for (double x : xs) r.add(x);
+  return r;
+}
+
+Values vec(Kind k, const float* p, int n) {
+  Values r;
+  r.kind = k;
+  for (int i = 0; i < n; ++i) r.add(p[i]);
+  return r;
+}
+
+Values ints(std::initializer_list<double> xs) { return make(Kind::kInt, xs); }
+
+Values array_state(const ClientArray& a, bool with_size) {
+  return with_size ? ints({double(a.size)}) : ints({});
+}
+
+// Client arrays and pixel storage.
+bool query_client(const GlContext& c, GLenum pname, Values& out) {
+  const ClientArrays& a = c.arrays;
+  switch (pname) {
+    case GL_VERTEX_ARRAY_SIZE: out = array_state(a.vertex, true); return true;
+    case GL_VERTEX_ARRAY_TYPE: out = ints({double(a.vertex.type)}); return true;
+    case GL_VERTEX_ARRAY_STRIDE: out = ints({double(a.vertex.stride)}); return true;
+    case GL_NORMAL_ARRAY_TYPE: out = ints({double(a.normal.type)}); return true;
+    case GL_NORMAL_ARRAY_STRIDE: out = ints({double(a.normal.stride)}); return true;
+    case GL_COLOR_ARRAY_SIZE: out = array_state(a.color, true); return true;
+    case GL_COLOR_ARRAY_TYPE: out = ints({double(a.color.type)}); return true;
+    case GL_COLOR_ARRAY_STRIDE: out = ints({double(a.color.stride)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_SIZE: out = array_state(a.texcoord, true); return true;
+    case GL_TEXTURE_COORD_ARRAY_TYPE: out = ints({double(a.texcoord.type)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_STRIDE: out = ints({double(a.texcoord.stride)}); return true;
+    default: break;
+  }
+  bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
+  bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
+  if (!pack && !unpack) return false;
+  const PixelStore& s = pack ? c.pack : c.unpack;
+  GLenum which = pname - (pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES);
+  const double values[6] = {double(s.swap_bytes), double(s.lsb_first), double(s.row_length),
+                            double(s.skip_rows), double(s.skip_pixels), double(s.alignment)};
+  out = make(which <= 1 ? Kind::kBool : Kind::kInt, {values[which]});
+  return true;
+}
+
+// Transformation, current attributes and lighting state.
+bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
+  const LightingState& l = c.lighting;
+  const Viewport& vp = c.raster.viewport;
+  switch (pname) {
+    case GL_CURRENT_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.color), 4); return true;
+    case GL_CURRENT_NORMAL: out = vec(Kind::kColor, glm::value_ptr(c.current.normal), 3); return true;
+    case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
+    case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
+    case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
+    case GL_TEXTURE_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.texture_matrix.top()), 16); return true;
+    case GL_MODELVIEW_STACK_DEPTH: out = ints({double(c.modelview.entries.size())}); return true;
+    case GL_PROJECTION_STACK_DEPTH: out = ints({double(c.projection.entries.size())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: out = ints({double(c.texture_matrix.entries.size())}); return true;
+    case GL_MATRIX_MODE: out = ints({double(c.matrix_mode)}); return true;
+    case GL_VIEWPORT: out = ints({double(vp.x), double(vp.y), double(vp.width), double(vp.height)}); return true;
+    case GL_DEPTH_RANGE: out = make(Kind::kColor, {vp.near_depth, vp.far_depth}); return true;
+    case GL_LIGHT_MODEL_AMBIENT: out = vec(Kind::kColor, glm::value_ptr(l.model.ambient), 4); return true;
+    case GL_LIGHT_MODEL_LOCAL_VIEWER: out = make(Kind::kBool, {double(l.model.local_viewer)}); return true;
+    case GL_LIGHT_MODEL_TWO_SIDE: out = make(Kind::kBool, {double(l.model.two_side)}); return true;
+    case GL_LIGHT_MODEL_COLOR_CONTROL:
+      out = ints({double(l.model.separate_specular ? GL_SEPARATE_SPECULAR_COLOR : GL_SINGLE_COLOR)});
+      return true;
+    case GL_SHADE_MODEL: out = ints({double(l.shade_model)}); return true;
+    case GL_COLOR_MATERIAL_FACE: out = ints({double(l.color_material_face)}); return true;
+    case GL_COLOR_MATERIAL_PARAMETER: out = ints({double(l.color_material_mode)}); return true;
+    default: return false;
+  }
+}
+
+// Fragment operations, framebuffer and textures.
+bool query_raster(const GlContext& c, GLenum pname, Values& out) {
+  const RasterState& r = c.raster;
+  const auto& m = r.color_mask;
+  switch (pname) {
+    case GL_DEPTH_FUNC: out = ints({double(r.depth_func)}); return true;
+    case GL_DEPTH_WRITEMASK: out = make(Kind::kBool, {double(r.depth_mask)}); return true;
+    case GL_DEPTH_CLEAR_VALUE: out = make(Kind::kColor, {r.clear_depth}); return true;
+    case GL_COLOR_CLEAR_VALUE: out = vec(Kind::kColor, glm::value_ptr(r.clear_color), 4); return true;
+    case GL_COLOR_WRITEMASK: out = make(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])}); return true;
+    case GL_BLEND_SRC: out = ints({double(r.blend_src)}); return true;
+    case GL_BLEND_DST: out = ints({double(r.blend_dst)}); return true;
+    case GL_CULL_FACE_MODE: out = ints({double(r.cull_mode)}); return true;
+    case GL_FRONT_FACE: out = ints({double(r.front_face)}); return true;
+    case GL_STENCIL_FUNC: out = ints({double(r.stencil_func)}); return true;
+    case GL_STENCIL_REF: out = ints({double(r.stencil_ref)}); return true;
+    case GL_STENCIL_VALUE_MASK: out = ints({double(std::min<GLuint>(r.stencil_value_mask, INT_MAX))}); return true;
+    case GL_STENCIL_WRITEMASK: out = ints({double(std::min<GLuint>(r.stencil_write_mask, INT_MAX))}); return true;
+    case GL_STENCIL_FAIL: out = ints({double(r.stencil_fail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_FAIL: out = ints({double(r.stencil_zfail)}); return true;
+    case GL_STENCIL_PASS_DEPTH_PASS: out = ints({double(r.stencil_zpass)}); return true;
+    case GL_STENCIL_CLEAR_VALUE: out = ints({double(r.clear_stencil)}); return true;
+    case GL_POLYGON_OFFSET_FACTOR: out = make(Kind::kFloat, {r.offset_factor}); return true;
+    case GL_POLYGON_OFFSET_UNITS: out = make(Kind::kFloat, {r.offset_units}); return true;
+    case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.bound_name)}); return true;
+    case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
+    case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
+    case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;
+    case GL_INDEX_BITS: case GL_AUX_BUFFERS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS:
+    case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: out = ints({0}); return true;
+    case GL_RGBA_MODE: out = make(Kind::kBool, {1}); return true;
+    case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
+    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = ints({GL_FRONT}); return true;
+    case GL_RENDER_MODE: out = ints({GL_RENDER}); return true;
+    default: return false;
+  }
+}
+
+bool query_limits(const GlContext& c, GLenum pname, Values& out) {
+  switch (pname) {
+    case GL_MAX_LIGHTS: out = ints({kMaxLights}); return true;
+    case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewDepth}); return true;
+    case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionDepth}); return true;
+    case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
+    case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
+    case GL_SUBPIXEL_BITS: out = ints({8}); return true;
+    case GL_PERSPECTIVE_CORRECTION_HINT: out = ints({double(c.hints[0])}); return true;
+    case GL_POINT_SMOOTH_HINT: out = ints({double(c.hints[1])}); return true;
+    case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
+    case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
+    case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
+    default: return false;
+  }
+}
+
+bool query(GlContext& c, GLenum pname, Values& out) {
+  if (bool* f = capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
+  if (bool* f = client_capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
+  return query_transform_lighting(c, pname, out) || query_raster(c, pname, out) ||
+         query_limits(c, pname, out) || query_client(c, pname, out);
+}
+
+template <class T>
+T convert(double v, Kind kind) {
+  if constexpr (std::is_same_v<T, GLboolean>) {
+    return v != 0.0 ? GL_TRUE : GL_FALSE;
+  } else if constexpr (std::is_same_v<T, GLint>) {
+    if (kind == Kind::kColor) return color_to_int(v);
+    return kind == Kind::kFloat ? round_to_int(v) : GLint(v);
+  } else {
+    return T(v);
+  }
+}
+
+template <class T>
+void get(GLenum pname, T* params) {
+  outside_begin_end([&](GlContext& c) {
+    Values v;
+    if (!query(c, pname, v)) return c.set_error(GL_INVALID_ENUM);
+    if (!params) return c.set_error(GL_INVALID_VALUE);
+    for (int i = 0; i < v.n; ++i) params[i] = convert<T>(v.v[i], v.kind);
+  });
+}
+
+}  // namespace
+}  // namespace shadelab::gl
+
+using namespace shadelab::gl;
+
+extern "C" {
+
+void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean* params) { get(pname, params); }
+void GLAPIENTRY glGetIntegerv(GLenum pname, GLint* params) { get(pname, params); }
+void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat* params) { get(pname, params); }
+void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble* params) { get(pname, params); }
+
+const GLubyte* GLAPIENTRY glGetString(GLenum name) {
+  static const char* const kVendor = "shadelab";
+  static const char* const kRenderer = "shadelab software rasterizer (OpenGL 1.1 fixed function)";
+  static const char* const kVersion = "1.1 shadelab " SHADELAB_VERSION;
+  static const char* const kExtensions =
+      "GL_EXT_bgra GL_EXT_rescale_normal GL_EXT_separate_specular_color "
+      "GL_SGIS_texture_edge_clamp GL_ARB_texture_non_power_of_two";
+  const char* result = nullptr;
+  outside_begin_end([&](GlContext& c) {
+    switch (name) {
+      case GL_VENDOR: result = kVendor; break;
+      case GL_RENDERER: result = kRenderer; break;
+      case GL_VERSION: result = kVersion; break;
+      case GL_EXTENSIONS: result = kExtensions; break;
+      default: c.set_error(GL_INVALID_ENUM);
+    }
+  });
+  return reinterpret_cast<const GLubyte*>(result);
+}
+
+}  // extern "C"

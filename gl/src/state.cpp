@@ -1,0 +1,158 @@
+// glEnable/glDisable/glIsEnabled, client state, glGetError, glHint, glPixelStore, glFinish and
+// glFlush (GL 1.1 sections 2.5, 2.8, 5.6, 5.5, 3.6.1). State only; nothing is drawn here.
+#include "gl/src/context.hpp"
+
+namespace shadelab::gl {
+
+// The flag behind an enable capability, or nullptr for one shadelab does not accept.
+// Capabilities that change images shadelab cannot draw (fog, alpha test, scissor, clip planes,
+// texture generation, logic op, 1D textures, stipple) are rejected with GL_INVALID_ENUM.
+bool* capability_flag(GlContext& c, GLenum cap) {
+  if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return &c.lighting.lights[cap - GL_LIGHT0].enabled;
+  switch (cap) {
+    case GL_LIGHTING: return &c.lighting.enabled;
+    case GL_NORMALIZE: return &c.lighting.normalize;
+    case GL_RESCALE_NORMAL: return &c.lighting.rescale_normal;
+    case GL_COLOR_MATERIAL: return &c.lighting.color_material;
+    case GL_DEPTH_TEST: return &c.raster.depth_test;
+    case GL_BLEND: return &c.raster.blend;
+    case GL_CULL_FACE: return &c.raster.cull;
+    case GL_STENCIL_TEST: return &c.raster.stencil_test;
+    case GL_POLYGON_OFFSET_FILL: return &c.raster.polygon_offset_fill;
+    case GL_DITHER: return &c.raster.dither;
+    case GL_TEXTURE_2D: return &c.textures.enabled_2d;
+    case GL_POINT_SMOOTH: return &c.inert.point_smooth;
+    case GL_LINE_SMOOTH: return &c.inert.line_smooth;
+    case GL_LINE_STIPPLE: return &c.inert.line_stipple;
+    case GL_POLYGON_OFFSET_POINT: return &c.inert.offset_point;
+    case GL_POLYGON_OFFSET_LINE: return &c.inert.offset_line;
+    default: return nullptr;
+  }
+}
+
+bool* client_capability_flag(GlContext& c, GLenum cap) {
+  switch (cap) {
+    case GL_VERTEX_ARRAY: return &c.arrays.vertex.enabled;
+    case GL_NORMAL_ARRAY: return &c.arrays.normal.enabled;
+    case GL_COLOR_ARRAY: return &c.arrays.color.enabled;
+    case GL_TEXTURE_COORD_ARRAY: return &c.arrays.texcoord.enabled;
+    case GL_INDEX_ARRAY: return &c.arrays.index_enabled;
+    case GL_EDGE_FLAG_ARRAY: return &c.arrays.edge_flag_enabled;
+    default: return nullptr;
+  }
+}
+
+namespace {
+
+void set_cap(GLenum cap, bool on) {
+  outside_begin_end([&](GlContext& c) {
+    bool* flag = capability_flag(c, cap);
+    if (!flag) return c.set_error(GL_INVALID_ENUM);
+    *flag = on;
+    if (cap == GL_COLOR_MATERIAL && on) apply_color_material(c);
+  });
+}
+
+void set_client_cap(GLenum cap, bool on) {
+  outside_begin_end([&](GlContext& c) {
+    bool* flag = client_capability_flag(c, cap);
+    if (!flag) return c.set_error(GL_INVALID_ENUM);
+    *flag = on;
+  });
+}
+
+int hint_slot(GLenum target) {
+  switch (target) {
+    case GL_PERSPECTIVE_CORRECTION_HINT: return 0;
+    case GL_POINT_SMOOTH_HINT: return 1;
+    case GL_LINE_SMOOTH_HINT: return 2;
+    case GL_POLYGON_SMOOTH_HINT: return 3;
+    case GL_FOG_HINT: return 4;
+    default: return -1;
+  }
+}
+
+// glPixelStore (GL 1.1 section 3.6.1): alignment 1, 2, 4 or 8; lengths and skips >= 0.
+void pixel_store(GLenum pname, double value) {
+  outside_begin_end([&](GlContext& c) {
+    bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
+    bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
+    if (!pack && !unpack) return c.set_error(GL_INVALID_ENUM);
+    PixelStore& s = pack ? c.pack : c.unpack;
+    GLenum base = pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES;
+    GLenum which = pname - base;  // 0 swap, 1 lsb, 2 row length, 3 skip rows, 4 skip pixels, 5 align
+    if (which <= 1) {
+      (which == 0 ? s.swap_bytes : s.lsb_first) = value != 0.0;
+      return;
+    }
+    if (!(value >= 0.0 && value <= 1e9)) return c.set_error(GL_INVALID_VALUE);
+    GLint v = GLint(value + 0.5);
+    if (which == 5) {
+      if (v != 1 && v != 2 && v != 4 && v != 8) return c.set_error(GL_INVALID_VALUE);
+      s.alignment = v;
+    } else {
+      (which == 2 ? s.row_length : which == 3 ? s.skip_rows : s.skip_pixels) = v;
+    }
+  });
+}
+
+void finish_drawing() {
+  outside_begin_end([](GlContext& c) {
+    present(c);
+    if (c.depth_exported) export_depth(c);
+  });
+}
+
+}  // namespace
+}  // namespace shadelab::gl
+
+using namespace shadelab::gl;
+
+extern "C" {
+
+void GLAPIENTRY glEnable(GLenum cap) { set_cap(cap, true); }
+void GLAPIENTRY glDisable(GLenum cap) { set_cap(cap, false); }
+void GLAPIENTRY glEnableClientState(GLenum cap) { set_client_cap(cap, true); }
+void GLAPIENTRY glDisableClientState(GLenum cap) { set_client_cap(cap, false); }
+
+GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
+  GLboolean result = GL_FALSE;
+  outside_begin_end([&](GlContext& c) {
+    bool* flag = capability_flag(c, cap);
+    if (!flag) flag = client_capability_flag(c, cap);
+    if (!flag) return c.set_error(GL_INVALID_ENUM);
+    result = *flag ? GL_TRUE : GL_FALSE;
+  });
+  return result;
+}
+
+// Returns and clears the recorded error. Between glBegin and glEnd it is itself an error and
+// returns 0, as Mesa does.
+GLenum GLAPIENTRY glGetError(void) {
+  GLenum result = GL_NO_ERROR;
+  outside_begin_end([&](GlContext& c) {
+    result = c.error;
+    c.error = GL_NO_ERROR;
+  });
+  return result;
+}
+
+void GLAPIENTRY glHint(GLenum target, GLenum mode) {
+  outside_begin_end([&](GlContext& c) {
+    int slot = hint_slot(target);
+    if (slot < 0 || (mode != GL_DONT_CARE && mode != GL_FASTEST && mode != GL_NICEST)) {
+      return c.set_error(GL_INVALID_ENUM);
+    }
+    c.hints[std::size_t(slot)] = mode;
+  });
+}
+
+void GLAPIENTRY glPixelStorei(GLenum pname, GLint param) { pixel_store(pname, param); }
+void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param) { pixel_store(pname, param); }
+
+// Every drawing call already reaches the caller's buffer when it returns; these two also
+// refresh the depth values handed out by OSMesaGetDepthBuffer.
+void GLAPIENTRY glFinish(void) { finish_drawing(); }
+void GLAPIENTRY glFlush(void) { finish_drawing(); }
+
+}  // extern "C"

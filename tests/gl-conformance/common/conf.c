@@ -1,0 +1,133 @@
+/* Shared helper of the GL conformance programs (see conf.h). */
+#include "conf.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <stb_image_write.h>
+
+int conf_init(ConfContext* c, int argc, char** argv, int width, int height) {
+  c->ctx = NULL;
+  c->buffer = NULL;
+  c->width = width;
+  c->height = height;
+  c->out_path = argc > 1 ? argv[1] : NULL;
+  if (!c->out_path) {
+    fprintf(stderr, "usage: %s OUTPUT.png\n", argc > 0 ? argv[0] : "program");
+    return 0;
+  }
+  c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  if (!c->ctx) {
+    fprintf(stderr, "OSMesaCreateContextExt failed\n");
+    return 0;
+  }
+  c->buffer = (unsigned char*)calloc((size_t)width * height * 4, 1);
+  if (!c->buffer || !OSMesaMakeCurrent(c->ctx, c->buffer, GL_UNSIGNED_BYTE, width, height)) {
+    fprintf(stderr, "OSMesaMakeCurrent failed\n");
+    return 0;
+  }
+  fprintf(stderr, "renderer: %s | %s\n", (const char*)glGetString(GL_RENDERER),
+          (const char*)glGetString(GL_VERSION));
+  glViewport(0, 0, width, height);
+  return 1;
+}
+
+int conf_check_error(const char* where) {
+  GLenum e = glGetError();
+  if (e == GL_NO_ERROR) return 0;
+  fprintf(stderr, "unexpected GL error 0x%04x at %s\n", (unsigned)e, where);
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  return 1;
+}
+
+int conf_write_png(const char* path, const unsigned char* rgba, int width, int height) {
+  stbi_flip_vertically_on_write(1);
+  return stbi_write_png(path, width, height, 4, rgba, width * 4) != 0;
+}
+
+int conf_finish(ConfContext* c) {
+  int rc = 0;
+  glFinish();
+  if (conf_check_error("end of program")) rc = 3;
+  if (!conf_write_png(c->out_path, c->buffer, c->width, c->height)) {
+    fprintf(stderr, "cannot write %s\n", c->out_path);
+    rc = 2;
+  }
+  OSMesaDestroyContext(c->ctx);
+  free(c->buffer);
+  return rc;
+}
+
+void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows) {
+  int w = c->width / ncols, h = c->height / nrows;
+  glViewport(col * w, c->height - (row + 1) * h, w, h);
+}
+
+static void sphere_vertex(float r, int i, int j, int slices, int stacks) {
+  double theta = 2.0 * CONF_PI * i / slices; /* around y */
+  double phi = CONF_PI * j / stacks;         /* from the north pole */
+  float x = (float)(sin(phi) * sin(theta)), y = (float)cos(phi), z = (float)(sin(phi) * cos(theta));
+  glNormal3f(x, y, z);
+  glTexCoord2f((float)i / slices, 1.0f - (float)j / stacks);
+  glVertex3f(r * x, r * y, r * z);
+}
+
+void conf_sphere(float r, int slices, int stacks) {
+  glBegin(GL_TRIANGLES);
+  for (int j = 0; j < stacks; ++j) {
+    for (int i = 0; i < slices; ++i) {
+      /* counter-clockwise seen from outside: (i, j) -> (i, j+1) -> (i+1, j+1) */
+      sphere_vertex(r, i, j, slices, stacks);
+      sphere_vertex(r, i, j + 1, slices, stacks);
+      sphere_vertex(r, i + 1, j + 1, slices, stacks);
+      sphere_vertex(r, i, j, slices, stacks);
+      sphere_vertex(r, i + 1, j + 1, slices, stacks);
+      sphere_vertex(r, i + 1, j, slices, stacks);
+    }
+  }
+  glEnd();
+}
+
+static void wall_vertex(float w, float h, int n, int i, int j) {
+  float u = (float)i / n, v = (float)j / n;
+  glTexCoord2f(u, v);
+  glVertex3f(-0.5f * w + u * w, -0.5f * h + v * h, 0.0f);
+}
+
+void conf_wall(float w, float h, int n) {
+  glNormal3f(0.0f, 0.0f, 1.0f);
+  glBegin(GL_TRIANGLES);
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      wall_vertex(w, h, n, i, j);
+      wall_vertex(w, h, n, i + 1, j);
+      wall_vertex(w, h, n, i + 1, j + 1);
+      wall_vertex(w, h, n, i, j);
+      wall_vertex(w, h, n, i + 1, j + 1);
+      wall_vertex(w, h, n, i, j + 1);
+    }
+  }
+  glEnd();
+}
+
+static void tube_vertex(float r, float y, int i, int slices) {
+  double t = 2.0 * CONF_PI * i / slices;
+  float x = (float)sin(t), z = (float)cos(t);
+  glNormal3f(x, 0.0f, z);
+  glVertex3f(r * x, y, r * z);
+}
+
+void conf_tube(float r, float h, int slices) {
+  glBegin(GL_TRIANGLES);
+  for (int i = 0; i < slices; ++i) {
+    tube_vertex(r, 0.0f, i, slices);
+    tube_vertex(r, 0.0f, i + 1, slices);
+    tube_vertex(r, h, i + 1, slices);
+    tube_vertex(r, 0.0f, i, slices);
+    tube_vertex(r, h, i + 1, slices);
+    tube_vertex(r, h, i, slices);
+  }
+  glEnd();
+}

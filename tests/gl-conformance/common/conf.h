@@ -1,0 +1,58 @@
+/* Shared helper of the GL conformance programs: an OSMesa context on a caller-owned RGBA
+ * GL_UNSIGNED_BYTE buffer, a PNG writer, panel viewports and a few tessellated shapes.
+ * Plain OpenGL 1.1 + OSMesa client code: it is compiled twice, once against Mesa's headers
+ * and libOSMesa, once against shadelab's gl/include headers and libshadelab-gl. */
+#ifndef SHADELAB_GL_CONFORMANCE_CONF_H
+#define SHADELAB_GL_CONFORMANCE_CONF_H
+
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CONF_PI 3.14159265358979323846
+
+typedef struct ConfContext {
+  OSMesaContext ctx;
+  unsigned char* buffer; /* width * height * 4 bytes, bottom row first (as OSMesa stores it) */
+  int width;
+  int height;
+  const char* out_path;
+} ConfContext;
+
+/* Creates an RGBA context (24-bit depth, 8-bit stencil) on a width x height buffer and makes
+ * it current; the output path is argv[1]. Prints the reason and returns 0 on failure. */
+int conf_init(ConfContext* c, int argc, char** argv, int width, int height);
+
+/* glFinish, checks glGetError, writes the buffer as a PNG (flipped so that the PNG's first row
+ * is the top of the image), destroys the context. Returns the process exit code. */
+int conf_finish(ConfContext* c);
+
+/* Writes an RGBA buffer stored bottom row first as a PNG, top row first. 1 on success. */
+int conf_write_png(const char* path, const unsigned char* rgba, int width, int height);
+
+/* Sets the viewport to cell (col, row) of an ncols x nrows grid over the whole buffer;
+ * row 0 is the top row. Cell sizes are width / ncols and height / nrows (integer division). */
+void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows);
+
+/* Reports an unexpected GL error (and where) on stderr; returns 1 if there was one. */
+int conf_check_error(const char* where);
+
+/* Shapes, all with per-vertex normals, drawn with glBegin(GL_TRIANGLES) (so that lighting tests
+ * do not depend on how an implementation splits quads). */
+/* UV sphere of radius r around the origin, poles on y; texture coordinates (u, v) in [0, 1]. */
+void conf_sphere(float r, int slices, int stacks);
+/* A wall in the plane z = 0 from (-w/2, -h/2) to (w/2, h/2), normal +z, n x n cells, texture
+ * coordinates in [0, 1]. */
+void conf_wall(float w, float h, int n);
+/* Open tube of radius r around the y axis from y = 0 to y = h, outward normals, counter-clockwise
+ * seen from outside. */
+void conf_tube(float r, float h, int slices);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

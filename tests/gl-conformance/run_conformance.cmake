@@ -1,0 +1,51 @@
+# Runs one conformance program: Mesa's build (the reference, llvmpipe as the test's environment
+# says), shadelab-gl's build, then gl_compare. Outputs in OUT_DIR: NAME.mesa.png,
+# NAME.shadelab.png and, on failure, NAME.diff.png.
+#
+#   cmake -DNAME=... -DOUT_DIR=... -DMESA_EXE=... [-DSHADELAB_EXE=...] -DCOMPARE=...
+#         [-DSELFCHECK=ON] -P run_conformance.cmake
+#
+# With SHADELAB_EXE empty (libshadelab-gl not built yet) only Mesa's build runs and its image is
+# checked not to be blank. With SELFCHECK=ON Mesa's softpipe driver is compared with llvmpipe
+# (NAME.selfcheck-*.png).
+file(MAKE_DIRECTORY ${OUT_DIR})
+
+function(run_step what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${NAME}: ${what} failed (exit status ${rc})")
+  endif()
+endfunction()
+
+if(SELFCHECK)  # own file names: may run beside the conformance test of the same program
+  set(llvm_png ${OUT_DIR}/${NAME}.selfcheck-llvmpipe.png)
+  set(soft_png ${OUT_DIR}/${NAME}.selfcheck-softpipe.png)
+  file(REMOVE ${llvm_png} ${soft_png})
+  run_step("Mesa's build under llvmpipe"
+           ${CMAKE_COMMAND} -E env GALLIUM_DRIVER=llvmpipe ${MESA_EXE} ${llvm_png})
+  run_step("Mesa's build under softpipe"
+           ${CMAKE_COMMAND} -E env GALLIUM_DRIVER=softpipe ${MESA_EXE} ${soft_png})
+  # A disagreement is reported, not fatal: this measures Mesa.
+  execute_process(COMMAND ${COMPARE} ${llvm_png} ${soft_png} --name ${NAME}.softpipe
+                          --diff ${OUT_DIR}/${NAME}.selfcheck-diff.png)
+  return()
+endif()
+
+set(mesa_png ${OUT_DIR}/${NAME}.mesa.png)
+file(REMOVE ${mesa_png})
+run_step("Mesa's build (${MESA_EXE})" ${MESA_EXE} ${mesa_png})
+
+
+
+if(NOT SHADELAB_EXE)
+  message(STATUS "${NAME}: libshadelab-gl is not built; checked Mesa's build only")
+  run_step("not-blank check" ${COMPARE} --not-blank ${mesa_png})
+  return()
+endif()
+
+set(shadelab_png ${OUT_DIR}/${NAME}.shadelab.png)
+set(diff_png ${OUT_DIR}/${NAME}.diff.png)
+file(REMOVE ${shadelab_png} ${diff_png})
+run_step("shadelab-gl's build (${SHADELAB_EXE})" ${SHADELAB_EXE} ${shadelab_png})
+run_step("comparison with Mesa" ${COMPARE} ${mesa_png} ${shadelab_png} --name ${NAME}
+         --diff ${diff_png})
