@@ -13,6 +13,7 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
+  gnuplot-nox     # bench/run.sh plots
 )
 
 install_packages() {

@@ -71,6 +71,14 @@ void array_element(GlContext& c, std::size_t i) {
 template <class IndexOf>
 void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of) {
   if (!usable(c.arrays.vertex)) return;
+  const ClientArrays& a = c.arrays;
+  auto load = [&](std::size_t i) {  // glArrayElement's attributes; the position returned
+    if (usable(a.normal)) c.current.normal = glm::vec3(fetch(a.normal, i, glm::vec4(0.0f), true));
+    if (usable(a.color)) c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), true);
+    if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false);
+    return fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false);
+  };
+  if (draw_array_mesh(c, mode, count, usable(a.color), index_of, load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);

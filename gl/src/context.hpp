@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "gl/src/primitive.hpp"
 #include "shadelab/light.hpp"
 #include "shadelab/material.hpp"
 #include "shadelab/pipeline.hpp"
@@ -163,6 +164,18 @@ struct Primitive {
   std::vector<Light> lights;  // enabled lights only
 };
 
+/// Reused buffers of the vertex-array path (draw.cpp's draw_array_mesh): one entry per
+/// distinct array element of a draw, so a shared vertex is transformed and lit once.
+struct ArrayScratch {
+  std::vector<glm::vec4> positions, colors;
+  std::vector<glm::vec3> normals;
+  std::vector<glm::vec2> texcoords;
+  std::vector<std::uint32_t> sequence;  // the draw's k-th element -> its distinct vertex
+  std::vector<std::uint32_t> remap;     // element - first element -> distinct vertex + 1
+  std::vector<Triangle> triangles;
+  std::vector<PrimitiveTriangle> pieces;
+};
+
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
 struct UserBuffer {
   void* data = nullptr;
@@ -192,6 +205,7 @@ struct GlContext {
   PixelStore pack, unpack;
   ClientArrays arrays;
   Primitive prim;
+  ArrayScratch array_scratch;
   std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                               GL_DONT_CARE};
 

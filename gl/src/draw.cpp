@@ -4,6 +4,9 @@
 // Fragment work (clipping, rasterization, texturing, blending) is the core pipeline's.
 #include "gl/src/draw.hpp"
 
+#include <cstdint>
+#include <functional>
+
 #include <algorithm>
 #include <cmath>
 
@@ -287,7 +290,112 @@ void flush_part(GlContext& c) {
   p.vertices = std::move(kept);
 }
 
+// Rotates a triangle so that its provoking vertex comes last (the core's flat convention);
+// false when the provoking vertex is not one of its three.
+bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
+  const std::uint32_t* v = t.v;
+  if (v[0] == t.provoking) out = {v[1], v[2], v[0]};
+  else if (v[1] == t.provoking) out = {v[2], v[0], v[1]};
+  else if (v[2] == t.provoking) out = {v[0], v[1], v[2]};
+  else return false;
+  return true;
+}
+
 }  // namespace
+
+bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
+                     const std::function<std::size_t(std::size_t)>& index_of,
+                     const std::function<glm::vec4(std::size_t)>& load_element) {
+  const LightingState& l = c.lighting;
+  bool flat = l.shade_model == GL_FLAT;
+  // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
+  // material changes the material per vertex: those go vertex by vertex.
+  bool flat_ok = mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN;
+  if (!is_polygon_mode(mode) || (flat && !flat_ok) || (l.enabled && l.color_material && per_vertex_color)) {
+    return false;
+  }
+  if (count > std::size_t(1) << 30) return false;  // 32-bit vertex indices below
+  ArrayScratch& m = c.array_scratch;
+  begin_primitive(c, mode);  // fixes the transforms and lights as glBegin does
+  Primitive& p = c.prim;
+  p.active = false;
+  // Distinct elements, in first-use order.
+  std::size_t lo = SIZE_MAX, hi = 0;
+  for (std::size_t k = 0; k < count; ++k) {
+    std::size_t i = index_of(k);
+    lo = std::min(lo, i), hi = std::max(hi, i);
+  }
+  if (count == 0 || hi - lo > 4 * count + 1024) return false;  // sparse indices: vertex by vertex
+  m.remap.assign(hi - lo + 1, 0);
+  m.sequence.resize(count);
+  m.positions.clear(), m.normals.clear(), m.colors.clear(), m.texcoords.clear();
+  const Texture* texture = active_texture(c);
+  CurrentAttribs saved = c.current;
+  for (std::size_t k = 0; k < count; ++k) {
+    std::size_t i = index_of(k);
+    std::uint32_t& slot = m.remap[i - lo];
+    if (slot == 0) {
+      glm::vec4 eye = p.modelview * load_element(i);
+      // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
+      if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
+      m.positions.push_back(eye);
+      if (l.enabled) {
+        m.normals.push_back(eye_normal(c));
+      } else {
+        m.colors.push_back(glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f)));
+      }
+      if (texture) m.texcoords.push_back(texcoord(c));
+      slot = std::uint32_t(m.positions.size());
+    }
+    m.sequence[k] = slot - 1;
+  }
+  c.current = saved;
+  const glm::mat4& projection = c.projection.top();
+  QuadSplit split = QuadSplit::kFromFirst;
+  if (mode == GL_QUADS) {
+    for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {
+      glm::vec4 v = projection * m.positions[m.sequence[k]];
+      bool inside = -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
+      if (!inside) split = QuadSplit::kFromSecond;
+    }
+  }
+  m.pieces.clear();
+  decompose(mode, std::uint32_t(count), false, split, m.pieces);
+  m.triangles.clear();
+  for (const PrimitiveTriangle& t : m.pieces) {
+    PrimitiveTriangle u = t;
+    for (std::uint32_t& v : u.v) v = m.sequence[v];
+    u.provoking = m.sequence[t.provoking];
+    Triangle tri{u.v[0], u.v[1], u.v[2]};
+    if (flat && !provoking_last(u, tri)) continue;  // not reached: flat_ok above
+    bool finite = true;
+    for (std::uint32_t v : tri) finite = finite && finite_clip(projection, m.positions[v]);
+    if (finite) m.triangles.push_back(tri);
+  }
+  if (m.triangles.empty() || (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK)) return true;
+
+  ShadeState shade;
+  shade.lighting = l.enabled;  // lit by the pipeline, once per distinct vertex
+  shade.shading = flat ? ShadingMode::kFlat : ShadingMode::kGouraud;
+  shade.model = l.model;
+  shade.lights = p.lights;
+  shade.front = l.front;
+  shade.back = l.back;
+  shade.texture = texture;
+  shade.texture_env = env_mode(c.textures.env_mode);
+  VertexInput in;
+  in.positions = m.positions;
+  in.normals = m.normals;
+  in.colors = m.colors;
+  in.texcoords = m.texcoords;
+  in.triangles = m.triangles;
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+                 c.pipeline.get());
+  mark_batch(c, projection, m.positions);
+  present(c);
+  return true;
+}
 
 void begin_primitive(GlContext& c, GLenum mode) {
   Primitive& p = c.prim;

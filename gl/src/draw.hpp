@@ -3,6 +3,9 @@
 // It never rasterizes or shades pixels itself.
 #pragma once
 
+#include <cstddef>
+#include <functional>
+
 #include <glm/vec4.hpp>
 
 #include "gl/src/context.hpp"
@@ -21,5 +24,14 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position);
 
 /// Draws what is left of the primitive, ends it and updates the caller's buffer.
 void end_primitive(GlContext& c);
+
+/// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
+/// each distinct element is transformed once (`load_element(i)` makes element i's normal,
+/// colour and texture coordinate current and returns its object position) and lit by the
+/// pipeline, not once per index. False, with nothing drawn, when the draw must go vertex by
+/// vertex instead (flat quads or polygons, colour material with a colour array, sparse indices).
+bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
+                     const std::function<std::size_t(std::size_t)>& index_of,
+                     const std::function<glm::vec4(std::size_t)>& load_element);
 
 }  // namespace shadelab::gl

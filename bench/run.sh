@@ -1,0 +1,143 @@
+#!/usr/bin/env bash
+# shadelab against Mesa on the same programs, on this machine (docs/performance.md).
+#
+#   bench/run.sh [--frames N] [--quick] [--no-softpipe] [--no-sweeps] [--out DIR]
+#
+# Builds the benchmark programs into build/, then runs each scene in turn with Mesa's
+# llvmpipe, Mesa's softpipe and libshadelab-gl (the same GL 1.x source, bench/gl_bench.c), and
+# the per-pixel Phong scene with llvmpipe running a GLSL shader against shadelab's Phong mode.
+# Prints a table of median frame times and the ratio shadelab / llvmpipe, checks that each
+# pair of images agrees within the conformance bar, then sweeps triangle count, resolution and
+# thread count, writing CSV files and, with gnuplot, PNG plots into the output folder
+# (default out/bench). Timings are medians of N frames (default 10) after 2 warm-up frames.
+# SHADELAB_BUILD_DIR chooses the build folder (default build).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+frames=10
+softpipe=1
+sweeps=1
+quick=0
+out=out/bench
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --frames) frames="$2"; shift 2 ;;
+    --quick) quick=1; shift ;;
+    --no-softpipe) softpipe=0; shift ;;
+    --no-sweeps) sweeps=0; shift ;;
+    --out) out="$2"; shift 2 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+done
+
+build=${SHADELAB_BUILD_DIR:-build}
+if [ ! -f "$build/build.ninja" ]; then
+  cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build" --target bench_gl_mesa bench_gl_shadelab bench_phong_glsl \
+  bench_phong_shadelab gl_compare >/dev/null
+mkdir -p "$out"
+B=$build/bench
+cores=$(nproc)
+export MESA_SHADER_CACHE_DISABLE=true MESA_DEBUG=silent LP_NUM_THREADS="$cores"
+
+# median_ms of one run: run COMMAND... -> prints the median in ms.
+median() { "$@" | sed -n 's/.*median_ms=\([0-9.]*\).*/\1/p'; }
+llvmpipe() { GALLIUM_DRIVER=llvmpipe "$@"; }
+softpipe_run() { GALLIUM_DRIVER=softpipe "$@"; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "-" }'; }
+
+echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $cores cores; Mesa: $(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo '?')"
+echo "frames: median of $frames after 2 warm-up frames, 1920x1080"
+printf '\n%-34s %12s %12s %12s %16s  %s\n' scene "llvmpipe ms" "softpipe ms" "shadelab ms" "shadelab/llvmpipe" "images"
+csv="$out/scenes.csv"
+echo "scene,llvmpipe_ms,softpipe_ms,shadelab_ms,ratio" > "$csv"
+big_triangles=1000000
+[ "$quick" = 1 ] && big_triangles=100000
+run_scene() {  # label, then the arguments of bench_gl_*
+  local label="$1"; shift
+  local l s=- m agree
+  l=$(median llvmpipe $B/bench_gl_mesa "$@" --frames "$frames" --png "$out/$label.mesa.png")
+  if [ "$softpipe" = 1 ]; then
+    s=$(median softpipe_run $B/bench_gl_mesa "$@" --frames 3 --warmup 0)
+  fi
+  m=$(median $B/bench_gl_shadelab "$@" --frames "$frames" --png "$out/$label.shadelab.png")
+  agree=$($build/tests/gl-conformance/gl_compare "$out/$label.mesa.png" "$out/$label.shadelab.png" \
+            --name "$label" --diff "$out/$label.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
+  printf '%-34s %12s %12s %12s %16s  %s\n' "$label" "$l" "$s" "$m" "$(ratio "$m" "$l")" "$agree"
+  echo "$label,$l,$s,$m,$(ratio "$m" "$l")" >> "$csv"
+}
+run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
+run_scene "b-shiny-teapot" teapot
+run_scene "c-fill-wall-2-layers" fill
+l=$(median llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.ppm")
+m=$(median $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png")
+agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.ppm" "$out/d-phong.shadelab.png" \
+          --name d-phong --diff "$out/d-phong.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
+printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$(ratio "$m" "$l")" "$agree"
+echo "d-phong-8-lights,$l,-,$m,$(ratio "$m" "$l")" >> "$csv"
+
+[ "$sweeps" = 1 ] || exit 0
+
+echo; echo "sweep: triangles (sphere, 8 lights, 1920x1080) -> $out/triangles.csv"
+echo "triangles,llvmpipe_ms,shadelab_ms" > "$out/triangles.csv"
+counts="1000 4000 16000 64000 256000 1000000 4000000"
+[ "$quick" = 1 ] && counts="1000 16000 256000"
+for n in $counts; do
+  l=$(median llvmpipe $B/bench_gl_mesa sphere --triangles "$n" --frames "$frames")
+  m=$(median $B/bench_gl_shadelab sphere --triangles "$n" --frames "$frames")
+  echo "$n,$l,$m" | tee -a "$out/triangles.csv"
+done
+
+echo; echo "sweep: resolution (the shiny teapot) -> $out/resolution.csv"
+echo "pixels,size,llvmpipe_ms,shadelab_ms" > "$out/resolution.csv"
+for size in 640x480 1280x720 1920x1080 2560x1440 3840x2160; do
+  l=$(median llvmpipe $B/bench_gl_mesa teapot --size "$size" --frames "$frames")
+  m=$(median $B/bench_gl_shadelab teapot --size "$size" --frames "$frames")
+  px=$(( ${size%x*} * ${size#*x} ))
+  echo "$px,$size,$l,$m" | tee -a "$out/resolution.csv"
+done
+
+echo; echo "sweep: threads (sphere 1M, and Phong) -> $out/threads.csv"
+echo "threads,sphere_llvmpipe_ms,sphere_shadelab_ms,phong_llvmpipe_ms,phong_shadelab_ms" > "$out/threads.csv"
+for t in $(seq 1 "$cores"); do
+  sl=$(LP_NUM_THREADS=$t median llvmpipe $B/bench_gl_mesa sphere --triangles "$big_triangles" --frames "$frames")
+  sm=$(SHADELAB_THREADS=$t median $B/bench_gl_shadelab sphere --triangles "$big_triangles" --frames "$frames")
+  pl=$(LP_NUM_THREADS=$t median llvmpipe $B/bench_phong_glsl --frames "$frames")
+  pm=$(SHADELAB_THREADS=$t median $B/bench_phong_shadelab --frames "$frames")
+  echo "$t,$sl,$sm,$pl,$pm" | tee -a "$out/threads.csv"
+done
+
+if command -v gnuplot >/dev/null; then
+  gnuplot <<EOF
+set terminal pngcairo size 800,500 font "DejaVu Sans,11"
+set datafile separator ","
+set key top left
+set grid
+set ylabel "frame time (ms, median)"
+set output "$out/triangles.png"
+set title "Frame time against triangle count (sphere, 8 point lights, 1920x1080)"
+set logscale xy
+set xlabel "triangles"
+plot "$out/triangles.csv" every ::1 using 1:2 with linespoints title "Mesa llvmpipe", \
+     "" every ::1 using 1:3 with linespoints title "shadelab"
+set output "$out/resolution.png"
+set title "Frame time against resolution (the shiny teapot)"
+set xlabel "pixels"
+plot "$out/resolution.csv" every ::1 using 1:3 with linespoints title "Mesa llvmpipe", \
+     "" every ::1 using 1:4 with linespoints title "shadelab"
+set output "$out/threads.png"
+set title "Frame time against threads"
+unset logscale
+set xlabel "threads"
+set xtics 1
+plot "$out/threads.csv" every ::1 using 1:2 with linespoints title "sphere, llvmpipe", \
+     "" every ::1 using 1:3 with linespoints title "sphere, shadelab", \
+     "" every ::1 using 1:4 with linespoints title "Phong, llvmpipe (GLSL)", \
+     "" every ::1 using 1:5 with linespoints title "Phong, shadelab"
+EOF
+  echo; echo "plots: $out/triangles.png $out/resolution.png $out/threads.png"
+else
+  echo; echo "gnuplot is not installed (scripts/setup.sh installs gnuplot-nox): no plots"
+fi
