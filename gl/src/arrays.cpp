@@ -1,6 +1,8 @@
 // Vertex arrays (GL 1.1 section 2.8): the four array pointers, glArrayElement, glDrawArrays and
 // glDrawElements. Each element becomes current attributes plus a vertex, exactly as the
 // equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest.
+#include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 #include "gl/src/convert.hpp"
@@ -48,8 +50,26 @@ double component(const ClientArray& a, std::size_t i, int k, bool normalized) {
 
 bool usable(const ClientArray& a) { return a.enabled && a.pointer; }
 
+// A GL_FLOAT array as floats: element i's first component, and the step between elements
+// in floats (a stride that is not a whole number of floats takes the general path).
+std::size_t float_stride(const ClientArray& a) {
+  return a.stride ? std::size_t(a.stride) / sizeof(float) : std::size_t(a.size);
+}
+bool aligned_floats(const ClientArray& a) {
+  return a.stride % sizeof(float) == 0 && reinterpret_cast<std::uintptr_t>(a.pointer) % alignof(float) == 0;
+}
+const float* floats3(const ClientArray& a, std::size_t i) {
+  return static_cast<const float*>(a.pointer) + i * float_stride(a);
+}
+
 // Up to four components of element i, the missing ones taken from `fill`.
 glm::vec4 fetch(const ClientArray& a, std::size_t i, glm::vec4 fill, bool normalized) {
+  if (a.type == GL_FLOAT) {  // the common case, read directly
+    std::size_t stride = a.stride ? std::size_t(a.stride) : sizeof(float) * std::size_t(a.size);
+    const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + i * stride;
+    for (int k = 0; k < a.size && k < 4; ++k) std::memcpy(&fill[k], p + sizeof(float) * std::size_t(k), sizeof(float));
+    return fill;
+  }
   for (int k = 0; k < a.size && k < 4; ++k) fill[k] = float(component(a, i, k, normalized));
   return fill;
 }
@@ -72,11 +92,33 @@ template <class IndexOf>
 void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of) {
   if (!usable(c.arrays.vertex)) return;
   const ClientArrays& a = c.arrays;
-  auto load = [&](std::size_t i) {  // glArrayElement's attributes; the position returned
-    if (usable(a.normal)) c.current.normal = glm::vec3(fetch(a.normal, i, glm::vec4(0.0f), true));
-    if (usable(a.color)) c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), true);
-    if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false);
-    return fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false);
+  const CurrentAttribs& now = c.current;
+  // glArrayElement's attributes for a range of elements, array by array.
+  auto load = [&](std::size_t first, std::size_t n, glm::vec4* positions, glm::vec3* normals,
+                  glm::vec4* colors, glm::vec4* texcoords) {
+    if (a.vertex.type == GL_FLOAT && a.vertex.size == 3 && aligned_floats(a.vertex)) {  // the common layout, read directly
+      const float* f = floats3(a.vertex, first);
+      std::size_t step = float_stride(a.vertex);
+      for (std::size_t v = 0; v < n; ++v, f += step) positions[v] = glm::vec4(f[0], f[1], f[2], 1.0f);
+    } else {
+      for (std::size_t v = 0; v < n; ++v) positions[v] = fetch(a.vertex, first + v, glm::vec4(0, 0, 0, 1), false);
+    }
+    if (usable(a.normal) && a.normal.type == GL_FLOAT && aligned_floats(a.normal)) {
+      const float* f = floats3(a.normal, first);
+      std::size_t step = float_stride(a.normal);
+      for (std::size_t v = 0; v < n; ++v, f += step) normals[v] = glm::vec3(f[0], f[1], f[2]);
+    } else {
+      for (std::size_t v = 0; v < n; ++v) {
+        normals[v] = usable(a.normal) ? glm::vec3(fetch(a.normal, first + v, glm::vec4(0.0f), true)) : now.normal;
+      }
+    }
+    for (std::size_t v = 0; v < n; ++v) {
+      colors[v] = usable(a.color) ? fetch(a.color, first + v, glm::vec4(0, 0, 0, 1), true) : now.color;
+    }
+    if (!texcoords) return;
+    for (std::size_t v = 0; v < n; ++v) {
+      texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), false) : now.texcoord;
+    }
   };
   if (draw_array_mesh(c, mode, count, usable(a.color), index_of, load)) return;
   CurrentAttribs saved = c.current;

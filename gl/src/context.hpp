@@ -165,13 +165,15 @@ struct Primitive {
 };
 
 /// Reused buffers of the vertex-array path (draw.cpp's draw_array_mesh): one entry per
-/// distinct array element of a draw, so a shared vertex is transformed and lit once.
+/// array element from the draw's smallest index to its largest, so a shared vertex is
+/// transformed and lit once.
 struct ArrayScratch {
   std::vector<glm::vec4> positions, colors;
   std::vector<glm::vec3> normals;
   std::vector<glm::vec2> texcoords;
-  std::vector<std::uint32_t> sequence;  // the draw's k-th element -> its distinct vertex
-  std::vector<std::uint32_t> remap;     // element - first element -> distinct vertex + 1
+  std::vector<glm::vec4> raw_texcoords;  // before the texture matrix
+  std::vector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
+  std::vector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
 };

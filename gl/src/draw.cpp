@@ -117,9 +117,9 @@ const Texture* active_texture(GlContext& c) {
 
 // The eye-space normal GL lights with: inverse transpose of the modelview, then rescaled
 // (GL 1.2 equation 2.1) or normalized when enabled; otherwise left as it is.
-glm::vec3 eye_normal(const GlContext& c) {
+glm::vec3 eye_normal(const GlContext& c, const glm::vec3& normal) {
   const Primitive& p = c.prim;
-  glm::vec3 n = p.normal_matrix * c.current.normal;
+  glm::vec3 n = p.normal_matrix * normal;
   if (c.lighting.normalize) {
     float len = glm::length(n);
     return len > 0.0f ? n / len : n;
@@ -137,7 +137,7 @@ void light_vertex(const GlContext& c, PrimitiveVertex& v) {
     return;
   }
   glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
-  glm::vec3 n = eye_normal(c);
+  glm::vec3 n = eye_normal(c, c.current.normal);
   LitColor f = light_point(l.model, c.prim.lights, l.front, {pos, n, nullptr});
   LitColor b = l.model.two_side ? light_point(l.model, c.prim.lights, l.back, {pos, -n, nullptr}) : f;
   v.front = sanitize(f.primary);
@@ -147,8 +147,7 @@ void light_vertex(const GlContext& c, PrimitiveVertex& v) {
 }
 
 // (s, t) after the texture matrix; q divides per vertex (not per fragment, see docs/gl.md).
-glm::vec2 texcoord(const GlContext& c) {
-  glm::vec4 tc = c.current.texcoord;
+glm::vec2 texcoord(const GlContext& c, glm::vec4 tc) {
   if (!c.prim.identity_texture_matrix) tc = c.prim.texture_matrix * tc;
   glm::vec2 st(tc);
   if (tc.w != 1.0f && tc.w != 0.0f) st /= tc.w;
@@ -305,7 +304,7 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 
 bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
                      const std::function<std::size_t(std::size_t)>& index_of,
-                     const std::function<glm::vec4(std::size_t)>& load_element) {
+                     const ElementLoader& load) {
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
@@ -319,38 +318,41 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
   begin_primitive(c, mode);  // fixes the transforms and lights as glBegin does
   Primitive& p = c.prim;
   p.active = false;
-  // Distinct elements, in first-use order.
+  // Every element from the smallest index used to the largest is a vertex (shared
+  // vertices are transformed and lit once; unused ones in between cost a little).
+  m.sequence.resize(count);
   std::size_t lo = SIZE_MAX, hi = 0;
   for (std::size_t k = 0; k < count; ++k) {
     std::size_t i = index_of(k);
+    m.sequence[k] = std::uint32_t(std::min<std::size_t>(i, UINT32_MAX));
     lo = std::min(lo, i), hi = std::max(hi, i);
   }
-  if (count == 0 || hi - lo > 4 * count + 1024) return false;  // sparse indices: vertex by vertex
-  m.remap.assign(hi - lo + 1, 0);
-  m.sequence.resize(count);
-  m.positions.clear(), m.normals.clear(), m.colors.clear(), m.texcoords.clear();
+  if (count == 0 || hi >= UINT32_MAX || hi - lo > 4 * count + 1024) return false;  // sparse: vertex by vertex
+  for (std::uint32_t& v : m.sequence) v -= std::uint32_t(lo);
+  std::size_t n = hi - lo + 1;
   const Texture* texture = active_texture(c);
-  CurrentAttribs saved = c.current;
-  for (std::size_t k = 0; k < count; ++k) {
-    std::size_t i = index_of(k);
-    std::uint32_t& slot = m.remap[i - lo];
-    if (slot == 0) {
-      glm::vec4 eye = p.modelview * load_element(i);
-      // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
-      if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
-      m.positions.push_back(eye);
-      if (l.enabled) {
-        m.normals.push_back(eye_normal(c));
-      } else {
-        m.colors.push_back(glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f)));
-      }
-      if (texture) m.texcoords.push_back(texcoord(c));
-      slot = std::uint32_t(m.positions.size());
-    }
-    m.sequence[k] = slot - 1;
-  }
-  c.current = saved;
+  // Object-space attributes of the range, then eye space in place.
+  m.positions.resize(n);
+  m.normals.resize(n);
+  m.colors.resize(n);
+  m.texcoords.resize(texture ? n : 0);
+  m.raw_texcoords.resize(texture ? n : 0);
+  load(lo, n, m.positions.data(), m.normals.data(), m.colors.data(),
+       texture ? m.raw_texcoords.data() : nullptr);
+  m.finite.resize(n);
   const glm::mat4& projection = c.projection.top();
+  for (std::size_t v = 0; v < n; ++v) {
+    glm::vec4 eye = p.modelview * m.positions[v];
+    // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
+    if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
+    m.positions[v] = eye;
+    m.finite[v] = finite_clip(projection, eye);
+    if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
+    else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
+    if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
+  }
+  if (l.enabled) m.colors.clear();
+  else m.normals.clear();
   QuadSplit split = QuadSplit::kFromFirst;
   if (mode == GL_QUADS) {
     for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {
@@ -359,18 +361,23 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
       if (!inside) split = QuadSplit::kFromSecond;
     }
   }
-  m.pieces.clear();
-  decompose(mode, std::uint32_t(count), false, split, m.pieces);
   m.triangles.clear();
-  for (const PrimitiveTriangle& t : m.pieces) {
-    PrimitiveTriangle u = t;
-    for (std::uint32_t& v : u.v) v = m.sequence[v];
-    u.provoking = m.sequence[t.provoking];
-    Triangle tri{u.v[0], u.v[1], u.v[2]};
-    if (flat && !provoking_last(u, tri)) continue;  // not reached: flat_ok above
-    bool finite = true;
-    for (std::uint32_t v : tri) finite = finite && finite_clip(projection, m.positions[v]);
-    if (finite) m.triangles.push_back(tri);
+  auto add = [&](Triangle tri) {  // NaN or infinite vertices drop their triangles
+    if (m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]) m.triangles.push_back(tri);
+  };
+  if (mode == GL_TRIANGLES) {  // the common case: no decomposition, the last vertex provokes
+    for (std::size_t k = 0; k + 3 <= count; k += 3) add({m.sequence[k], m.sequence[k + 1], m.sequence[k + 2]});
+  } else {
+    m.pieces.clear();
+    decompose(mode, std::uint32_t(count), false, split, m.pieces);
+    for (const PrimitiveTriangle& t : m.pieces) {
+      PrimitiveTriangle u = t;
+      for (std::uint32_t& v : u.v) v = m.sequence[v];
+      u.provoking = m.sequence[t.provoking];
+      Triangle tri{u.v[0], u.v[1], u.v[2]};
+      if (flat && !provoking_last(u, tri)) continue;  // not reached: flat_ok above
+      add(tri);
+    }
   }
   if (m.triangles.empty() || (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK)) return true;
 
@@ -422,7 +429,7 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   if (!is_polygon_mode(p.mode)) return;  // points and lines are accepted but not drawn
   PrimitiveVertex v;
   v.eye = p.modelview * object_position;
-  v.texcoord = texcoord(c);
+  v.texcoord = texcoord(c, c.current.texcoord);
   light_vertex(c, v);
   p.vertices.push_back(v);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "gl/src/context.hpp"
@@ -25,13 +26,19 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position);
 /// Draws what is left of the primitive, ends it and updates the caller's buffer.
 void end_primitive(GlContext& c);
 
+/// Fills object-space attributes of array elements first .. first + n - 1: positions,
+/// normals, colours and (when `texcoords` is not null) texture coordinates, taking the
+/// current value where an array is disabled.
+using ElementLoader = std::function<void(std::size_t first, std::size_t n, glm::vec4* positions,
+                                         glm::vec3* normals, glm::vec4* colors,
+                                         glm::vec4* texcoords)>;
+
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
-/// each distinct element is transformed once (`load_element(i)` makes element i's normal,
-/// colour and texture coordinate current and returns its object position) and lit by the
+/// each element in the draw's index range is loaded and transformed once and lit by the
 /// pipeline, not once per index. False, with nothing drawn, when the draw must go vertex by
 /// vertex instead (flat quads or polygons, colour material with a colour array, sparse indices).
 bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
                      const std::function<std::size_t(std::size_t)>& index_of,
-                     const std::function<glm::vec4(std::size_t)>& load_element);
+                     const ElementLoader& load);
 
 }  // namespace shadelab::gl

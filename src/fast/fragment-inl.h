@@ -33,6 +33,7 @@ struct Weights {
 
 HWY_INLINE Weights perspective_weights(const TriSetup& t, VD b0, VD b1, VD b2) {
   const DD dd;
+  if (t.affine) return {b0, b1, b2};
   VD q0 = hn::Mul(b0, hn::Set(dd, double(t.v[0]->inv_w)));
   VD q1 = hn::Mul(b1, hn::Set(dd, double(t.v[1]->inv_w)));
   VD q2 = hn::Mul(b2, hn::Set(dd, double(t.v[2]->inv_w)));

@@ -91,7 +91,7 @@ void scalar_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int 
   }
 }
 
-// Coverage, then depth (reference_raster.inl: b = w / area, b2 = 1 - b0 - b1, z = sum b z).
+// Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z).
 void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
            const VD e[3], const VD thr[3]) {
   const DD dd;
@@ -104,8 +104,8 @@ void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int 
   int valid = job.fb->width - x;
   if (valid < int(hn::Lanes(dd))) bits &= (1u << valid) - 1u;
   if (!bits) return;
-  VD area = hn::Set(dd, double(t.area));
-  VD b0 = hn::Div(e[0], area), b1 = hn::Div(e[1], area);
+  VD inv_area = hn::Set(dd, t.inv_area);
+  VD b0 = hn::Mul(e[0], inv_area), b1 = hn::Mul(e[1], inv_area);
   VD b2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0), b1);
   VD zd = hn::Add(hn::Add(hn::Mul(b0, hn::Set(dd, double(t.v[0]->z))), hn::Mul(b1, hn::Set(dd, double(t.v[1]->z)))),
                   hn::Mul(b2, hn::Set(dd, double(t.v[2]->z))));

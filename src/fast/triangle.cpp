@@ -66,6 +66,8 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   t.v[0] = v[0], t.v[1] = v[i1], t.v[2] = v[i2];
   t.var[0] = var[0], t.var[1] = var[i1], t.var[2] = var[i2];
   t.area = area > 0 ? area : -area;
+  t.inv_area = 1.0 / double(t.area);
+  t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
   if (!pixel_box(job, tx, ty, t)) return false;
   for (int e = 0; e < 3; ++e) {
     const RasterVertex &p = *t.v[(e + 1) % 3], &q = *t.v[(e + 2) % 3];
@@ -110,13 +112,16 @@ detail::Fragment reference_fragment(const DrawJob& job, const TriSetup& t, Worke
   frag.x = x;
   frag.y = y;
   frag.z = z;
-  double b0 = w0 / double(t.area), b1 = w1 / double(t.area);
+  double b0 = w0 * t.inv_area, b1 = w1 * t.inv_area;
   double b2 = 1.0 - b0 - b1;
-  double q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
-  double inv = 1.0 / (q0 + q1 + q2);
-  q0 *= inv;
-  q1 *= inv;
-  q2 *= inv;
+  double q0 = b0, q1 = b1, q2 = b2;
+  if (!t.affine) {
+    q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
+    double inv = 1.0 / (q0 + q1 + q2);
+    q0 *= inv;
+    q1 *= inv;
+    q2 *= inv;
+  }
   for (int i = 0; i < detail::kAttrCount; ++i) {
     frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
                                       q2 * (*v[2]->attr)[i]);

@@ -16,6 +16,8 @@ struct TriSetup {
   const float* flat;         ///< provoking vertex's varyings when flat shading, else null
   bool front;
   std::int64_t area;         ///< twice the snapped area, > 0
+  double inv_area;           ///< 1 / area (the reference's barycentric scale)
+  bool affine;               ///< equal 1/w at the three vertices: no perspective division
   std::int64_t dx[3], dy[3];  ///< edge e runs from v[e+1] to v[e+2] (mod 3)
   double threshold[3];        ///< coverage: edge value >= threshold (0 owned, 1 not)
   float offset;               ///< polygon offset added to depth

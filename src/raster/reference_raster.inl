@@ -89,6 +89,10 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
   int y1 = static_cast<int>(std::min<std::int64_t>(height - 1, (max_y >> kSubpixelBits) + 1));
   std::uint64_t covered = 0;
   Fragment frag;
+  const double inv_area = 1.0 / double(area);
+  // Equal 1/w at the three vertices (an orthographic view, or a face-on triangle): the
+  // perspective weights are the screen-space ones, taken as they are.
+  const bool affine = v[0]->inv_w == v[1]->inv_w && v[1]->inv_w == v[2]->inv_w;
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       FixedPoint centre{std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2,
@@ -98,17 +102,20 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
       std::int64_t w2 = edge_function(p[0], p[1], centre);
       if (w0 + bias[0] < 0 || w1 + bias[1] < 0 || w2 + bias[2] < 0) continue;
       // Screen-space barycentrics: depth is linear in window space (GL 1.5 section 3.5.1).
-      double b0 = double(w0) / double(area), b1 = double(w1) / double(area);
+      double b0 = double(w0) * inv_area, b1 = double(w1) * inv_area;
       double b2 = 1.0 - b0 - b1;
       frag.x = x;
       frag.y = y;
       frag.z = static_cast<float>(b0 * v[0]->z + b1 * v[1]->z + b2 * v[2]->z);
       // Perspective-correct attributes: interpolate a/w and 1/w, then divide.
-      double q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
-      double inv = 1.0 / (q0 + q1 + q2);
-      q0 *= inv;
-      q1 *= inv;
-      q2 *= inv;
+      double q0 = b0, q1 = b1, q2 = b2;
+      if (!affine) {
+        q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
+        double inv = 1.0 / (q0 + q1 + q2);
+        q0 *= inv;
+        q1 *= inv;
+        q2 *= inv;
+      }
       for (int i = 0; i < kAttrCount; ++i) {
         frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
                                           q2 * (*v[2]->attr)[i]);
