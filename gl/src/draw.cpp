@@ -281,7 +281,6 @@ void flush_part(GlContext& c) {
   PartialFlush f = partial_flush(p.mode, std::uint32_t(p.vertices.size()));
   if (f.drawable < 3) return;
   draw_vertices(c, f.drawable);
-  present(c);
   if (p.mode == GL_TRIANGLE_STRIP && ((f.drawable - 2) & 1u)) p.odd_strip_start = !p.odd_strip_start;
   std::vector<PrimitiveVertex> kept;
   if (f.keep_first) kept.push_back(p.vertices.front());
@@ -400,7 +399,6 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
   mark_batch(c, projection, m.positions);
-  present(c);
   return true;
 }
 
@@ -440,7 +438,6 @@ void end_primitive(GlContext& c) {
   if (p.vertices.size() >= 3) draw_vertices(c, std::uint32_t(p.vertices.size()));
   p.vertices.clear();
   p.active = false;
-  present(c);
 }
 
 }  // namespace shadelab::gl

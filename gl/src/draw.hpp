@@ -23,7 +23,8 @@ void begin_primitive(GlContext& c, GLenum mode);
 /// and material (or takes the current colour when lighting is off), and adds it.
 void emit_vertex(GlContext& c, const glm::vec4& object_position);
 
-/// Draws what is left of the primitive, ends it and updates the caller's buffer.
+/// Draws what is left of the primitive and ends it (the caller's buffer is updated at the
+/// next flush).
 void end_primitive(GlContext& c);
 
 /// Fills object-space attributes of array elements first .. first + n - 1: positions,

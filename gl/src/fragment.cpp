@@ -81,7 +81,6 @@ void GLAPIENTRY glClear(GLbitfield mask) {
       c.fb.clear_depth(float(c.raster.clear_depth));
     }
     if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
-    present(c);
   });
 }
 

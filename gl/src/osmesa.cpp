@@ -92,6 +92,7 @@ OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMes
 
 void GLAPIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
   if (!ctx) return;
+  present(*ctx);  // what was drawn reaches the caller's buffer, as a flush would do
   if (current_context() == ctx) current_context() = nullptr;
   delete ctx;
 }
@@ -99,10 +100,14 @@ void GLAPIENTRY OSMesaDestroyContext(OSMesaContext ctx) {
 // OSMesaMakeCurrent(NULL, NULL, ...) releases the current context, as in Mesa.
 GLboolean GLAPIENTRY OSMesaMakeCurrent(OSMesaContext ctx, void* buffer, GLenum type,
                                        GLsizei width, GLsizei height) {
+  // Drawing reaches the caller's buffer at a flush; changing or rebinding the current
+  // context is one (and rebinding reads the buffer back).
+  if (GlContext* old = current_context()) present(*old);
   if (!ctx && !buffer) {
     current_context() = nullptr;
     return GL_TRUE;
   }
+  if (ctx) present(*ctx);
   if (!ctx || !buffer || type != GL_UNSIGNED_BYTE || width < 1 || height < 1 ||
       width > kMaxBufferDim || height > kMaxBufferDim) {
     return GL_FALSE;

@@ -1,6 +1,6 @@
-// The link between the context's framebuffer and the caller's OSMesa buffer: changed
-// rectangles are copied out after every drawing call (in the buffer's format, row length and
-// Y direction), the buffer is read in at OSMesaMakeCurrent, and depth values are exported in
+// The link between the context's framebuffer and the caller's OSMesa buffer: the rectangle
+// changed since the last flush is copied out at glFinish / glFlush and when the current
+// context changes (in the buffer's format, row length and Y direction), the buffer is read in at OSMesaMakeCurrent, and depth values are exported in
 // Mesa's layout for OSMesaGetDepthBuffer. No drawing here.
 #include <algorithm>
 #include <cmath>

@@ -150,8 +150,9 @@ void GLAPIENTRY glHint(GLenum target, GLenum mode) {
 void GLAPIENTRY glPixelStorei(GLenum pname, GLint param) { pixel_store(pname, param); }
 void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param) { pixel_store(pname, param); }
 
-// Every drawing call already reaches the caller's buffer when it returns; these two also
-// refresh the depth values handed out by OSMesaGetDepthBuffer.
+// Drawing reaches the caller's buffer here (and when the current context changes), as with
+// Mesa's llvmpipe, which renders at a flush; these two also refresh the depth values handed
+// out by OSMesaGetDepthBuffer.
 void GLAPIENTRY glFinish(void) { finish_drawing(); }
 void GLAPIENTRY glFlush(void) { finish_drawing(); }
 
