@@ -4,6 +4,7 @@
 // Fragment work (clipping, rasterization, texturing, blending) is the core pipeline's.
 #include "gl/src/draw.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 
@@ -336,20 +337,28 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
   m.colors.resize(n);
   m.texcoords.resize(texture ? n : 0);
   m.raw_texcoords.resize(texture ? n : 0);
-  load(lo, n, m.positions.data(), m.normals.data(), m.colors.data(),
-       texture ? m.raw_texcoords.data() : nullptr);
   m.finite.resize(n);
   const glm::mat4& projection = c.projection.top();
-  for (std::size_t v = 0; v < n; ++v) {
-    glm::vec4 eye = p.modelview * m.positions[v];
-    // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
-    if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
-    m.positions[v] = eye;
-    m.finite[v] = finite_clip(projection, eye);
-    if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
-    else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
-    if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
-  }
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  // Ranges of vertices on the pipeline's threads (the loader only reads the arrays).
+  auto in_parallel = [&](std::size_t items, const std::function<void(std::size_t, std::size_t)>& fn) {
+    if (c.pipeline && items >= 8192) c.pipeline->parallel_for(items, 4096, fn);
+    else fn(0, items);
+  };
+  in_parallel(n, [&](std::size_t begin, std::size_t end) {
+    load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], &m.colors[begin],
+         texture ? &m.raw_texcoords[begin] : nullptr);
+    for (std::size_t v = begin; v < end; ++v) {
+      glm::vec4 eye = p.modelview * m.positions[v];
+      // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
+      if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
+      m.positions[v] = eye;
+      m.finite[v] = finite_clip(projection, eye);
+      if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
+      else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
+      if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
+    }
+  });
   if (l.enabled) m.colors.clear();
   else m.normals.clear();
   QuadSplit split = QuadSplit::kFromFirst;
@@ -365,7 +374,24 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
     if (m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]) m.triangles.push_back(tri);
   };
   if (mode == GL_TRIANGLES) {  // the common case: no decomposition, the last vertex provokes
-    for (std::size_t k = 0; k + 3 <= count; k += 3) add({m.sequence[k], m.sequence[k + 1], m.sequence[k + 2]});
+    // In parallel; triangles with a non-finite vertex are removed afterwards (rare).
+    std::size_t tris = count / 3;
+    m.triangles.resize(tris);
+    std::atomic<bool> dropped{false};
+    in_parallel(tris, [&](std::size_t begin, std::size_t end) {
+      bool drop = false;
+      for (std::size_t t = begin; t < end; ++t) {
+        Triangle tri{m.sequence[3 * t], m.sequence[3 * t + 1], m.sequence[3 * t + 2]};
+        m.triangles[t] = tri;
+        drop = drop || !(m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]);
+      }
+      if (drop) dropped = true;
+    });
+    if (dropped) {
+      std::erase_if(m.triangles, [&](const Triangle& tri) {
+        return !(m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]);
+      });
+    }
   } else {
     m.pieces.clear();
     decompose(mode, std::uint32_t(count), false, split, m.pieces);
@@ -395,10 +421,11 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
   in.colors = m.colors;
   in.texcoords = m.texcoords;
   in.triangles = m.triangles;
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
-  mark_batch(c, projection, m.positions);
+  // The whole viewport is marked (one copy per flush), not the bounds of every vertex.
+  const Viewport& vp = c.raster.viewport;
+  mark_dirty(c, vp.x, vp.y, vp.x + vp.width, vp.y + vp.height);
   return true;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -167,6 +168,11 @@ class PipelineContext {
   PipelineContext(const PipelineContext&) = delete;
   PipelineContext& operator=(const PipelineContext&) = delete;
   int threads() const;
+  /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
+  /// threads (the caller joins in); returns when every chunk is done. For front ends that
+  /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.
+  void parallel_for(std::size_t count, std::size_t grain,
+                    const std::function<void(std::size_t begin, std::size_t end)>& fn);
   struct Impl;
   Impl& impl() { return *impl_; }
 

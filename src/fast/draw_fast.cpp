@@ -3,6 +3,7 @@
 // tiles rasterized by whichever thread is free. Every stage runs on the context's pool.
 #include "fast/draw_fast.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 
@@ -20,6 +21,17 @@ PipelineContext::PipelineContext(int threads)
 PipelineContext::~PipelineContext() = default;
 
 int PipelineContext::threads() const { return impl_->pool.size(); }
+
+void PipelineContext::parallel_for(std::size_t count, std::size_t grain,
+                                   const std::function<void(std::size_t, std::size_t)>& fn) {
+  if (count == 0) return;
+  grain = std::max<std::size_t>(grain, 1);
+  std::size_t chunks = std::min<std::size_t>((count + grain - 1) / grain, 1u << 20);
+  impl_->pool.run(int(chunks), [&](int c, int) {
+    std::size_t begin = count * std::size_t(c) / chunks, end = count * std::size_t(c + 1) / chunks;
+    if (begin < end) fn(begin, end);
+  });
+}
 
 namespace fast {
 
