@@ -2,7 +2,9 @@
 // glColorMask, glBlendFunc, glStencil*, glCullFace, glFrontFace, glPolygonOffset, glClear*.
 // Stores state; the core pipeline applies it per fragment. glClear writes the framebuffer.
 #include <algorithm>
+#include <cstddef>
 #include <cstring>
+#include <functional>
 
 #include "gl/src/context.hpp"
 
@@ -23,24 +25,53 @@ bool is_blend_factor(GLenum f) {
 
 float clamp01(float v) { return v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
 
+// Runs fn over ranges of the framebuffer's pixels, on the pipeline's threads when it has
+// them (a full-HD clear writes 18 MB).
+void for_pixels(GlContext& c, const std::function<void(std::size_t, std::size_t)>& fn) {
+  std::size_t n = std::size_t(c.fb.width) * std::size_t(c.fb.height);
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  if (c.pipeline && n >= (1u << 16)) c.pipeline->parallel_for(n, 1u << 15, fn);
+  else fn(0, n);
+}
+
 // The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3).
 void clear_color(GlContext& c) {
   const auto& mask = c.raster.color_mask;
-  if (mask[0] && mask[1] && mask[2] && mask[3]) return c.fb.clear_color(c.raster.clear_color);
   Framebuffer scratch;
   scratch.color.resize(4);
   scratch.clear_color(c.raster.clear_color);  // the core's float-to-byte rounding
-  for (std::size_t i = 0; i < c.fb.color.size(); i += 4) {
-    for (std::size_t k = 0; k < 4; ++k) {
-      if (mask[k]) c.fb.color[i + k] = scratch.color[k];
+  const std::uint8_t* px = scratch.color.data();
+  bool all = mask[0] && mask[1] && mask[2] && mask[3];
+  for_pixels(c, [&](std::size_t begin, std::size_t end) {
+    std::uint8_t* color = c.fb.color.data();
+    for (std::size_t i = begin * 4; i < end * 4; i += 4) {
+      if (all) {
+        std::memcpy(&color[i], px, 4);
+        continue;
+      }
+      for (std::size_t k = 0; k < 4; ++k) {
+        if (mask[k]) color[i + k] = px[k];
+      }
     }
-  }
+  });
+}
+
+void clear_depth(GlContext& c) {
+  float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
+  for_pixels(c, [&](std::size_t begin, std::size_t end) {
+    std::fill(c.fb.depth.begin() + std::ptrdiff_t(begin), c.fb.depth.begin() + std::ptrdiff_t(end), d);
+  });
 }
 
 void clear_stencil(GlContext& c) {
   std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
   std::uint8_t value = std::uint8_t(c.raster.clear_stencil & 0xff);
-  for (std::uint8_t& s : c.fb.stencil) s = std::uint8_t((s & ~write) | (value & write));
+  for_pixels(c, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      std::uint8_t& s = c.fb.stencil[i];
+      s = std::uint8_t((s & ~write) | (value & write));
+    }
+  });
 }
 
 }  // namespace
@@ -78,7 +109,7 @@ void GLAPIENTRY glClear(GLbitfield mask) {
       mark_dirty(c, 0, 0, c.fb.width, c.fb.height);
     }
     if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
-      c.fb.clear_depth(float(c.raster.clear_depth));
+      clear_depth(c);
     }
     if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
   });

@@ -57,18 +57,24 @@ void present(GlContext& c) {
   const UserBuffer& u = c.user;
   if (d.empty() || !u.data) return;
   Swizzle s = swizzle_of(u.format);
-  for (int y = d.y0; y < d.y1; ++y) {
-    const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(d.x0)) * 4];
-    unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(d.x0) * std::size_t(s.bytes);
-    if (u.format == OSMESA_RGBA) {
-      std::memcpy(dst, src, std::size_t(d.x1 - d.x0) * 4);
-      continue;
+  auto rows = [&](std::size_t begin, std::size_t end) {
+    for (int y = d.y0 + int(begin); y < d.y0 + int(end); ++y) {
+      const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(d.x0)) * 4];
+      unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(d.x0) * std::size_t(s.bytes);
+      if (u.format == OSMESA_RGBA) {
+        std::memcpy(dst, src, std::size_t(d.x1 - d.x0) * 4);
+        continue;
+      }
+      for (int x = d.x0; x < d.x1; ++x, src += 4, dst += s.bytes) {
+        dst[s.r] = src[0], dst[s.g] = src[1], dst[s.b] = src[2];
+        if (s.a >= 0) dst[s.a] = src[3];
+      }
     }
-    for (int x = d.x0; x < d.x1; ++x, src += 4, dst += s.bytes) {
-      dst[s.r] = src[0], dst[s.g] = src[1], dst[s.b] = src[2];
-      if (s.a >= 0) dst[s.a] = src[3];
-    }
-  }
+  };
+  std::size_t n = std::size_t(d.y1 - d.y0);
+  std::size_t pixels = n * std::size_t(d.x1 - d.x0);
+  if (c.pipeline && pixels >= (1u << 16)) c.pipeline->parallel_for(n, std::max<std::size_t>(1, n / 16), rows);
+  else rows(0, n);
 }
 
 // The caller's buffer is the colour buffer, as in classic OSMesa: its pixels are read in
