@@ -1,21 +1,35 @@
 // Helpers shared by the subcommands: --size parsing and the default font.
+#include <cctype>
 #include <iostream>
-#include <regex>
 
 #include "commands.hpp"
 
 namespace shadelab::cli {
 
+namespace {
+
+// 1 to 9 decimal digits.
+bool is_count(const std::string& s) {
+  if (s.empty() || s.size() > 9) return false;
+  for (char c : s) {
+    if (!std::isdigit(static_cast<unsigned char>(c))) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool add_size_overrides(const std::string& size, const char* command,
                         std::vector<std::string>& overrides) {
-  std::smatch m;
-  if (!std::regex_match(size, m, std::regex(R"((\d{1,9})x(\d{1,9}))"))) {
+  std::size_t x = size.find('x');
+  std::string width = size.substr(0, x), height = x == std::string::npos ? "" : size.substr(x + 1);
+  if (!is_count(width) || !is_count(height)) {
     std::cerr << "shadelab " << command << ": --size: expected WIDTHxHEIGHT (e.g. 1920x1080), got \""
               << size << "\"\n";
     return false;
   }
-  overrides.push_back("image.width=" + m[1].str());
-  overrides.push_back("image.height=" + m[2].str());
+  overrides.push_back("image.width=" + width);
+  overrides.push_back("image.height=" + height);
   return true;
 }
 

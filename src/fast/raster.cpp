@@ -36,9 +36,9 @@ void open_group(const DrawJob& job, std::size_t index, int valid, int lanes, Gro
   Framebuffer& fb = *job.fb;
   g.depth = job.frag->depth_test ? &fb.depth[index] : nullptr;
   g.color = job.plan.writes_color ? reinterpret_cast<std::uint32_t*>(&fb.color[index * 4]) : nullptr;
-  g.valid = valid < lanes ? valid : 0;
+  g.valid = valid > 0 && valid < lanes ? valid : 0;
   if (!g.valid) return;
-  std::size_t n = std::size_t(valid);
+  std::size_t n = std::size_t(unsigned(g.valid));
   if (g.depth) g.depth = static_cast<float*>(std::memcpy(g.depth_copy, g.depth, n * sizeof(float)));
   if (g.color) g.color = static_cast<std::uint32_t*>(std::memcpy(g.color_copy, g.color, n * 4));
 }

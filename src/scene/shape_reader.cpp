@@ -236,8 +236,11 @@ std::shared_ptr<const Mesh> SceneReader::mesh_file(const JsonValue& params, cons
   Diagnostics mesh_errors;
   if (!load_obj(full, mesh, mesh_errors)) {
     for (const Diagnostic& d : mesh_errors.items()) {
-      std::string where = d.location.file + (d.location.line > 0 ? ":" + std::to_string(d.location.line) : "");
-      r_.error(*file, file_path, where + ": " + d.message);
+      std::string message = d.location.file;
+      if (d.location.line > 0) message += ':' + std::to_string(d.location.line);
+      message += ": ";
+      message += d.message;
+      r_.error(*file, file_path, message);
     }
     return nullptr;
   }
