@@ -120,7 +120,12 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
       texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), false) : now.texcoord;
     }
   };
-  if (draw_array_mesh(c, mode, count, usable(a.color), index_of, load)) return;
+  std::vector<std::uint32_t>& sequence = c.array_scratch.sequence;
+  sequence.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    sequence[k] = std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
+  }
+  if (draw_array_mesh(c, mode, usable(a.color), load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);

@@ -302,9 +302,7 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 
 }  // namespace
 
-bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
-                     const std::function<std::size_t(std::size_t)>& index_of,
-                     const ElementLoader& load) {
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const ElementLoader& load) {
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
@@ -313,23 +311,18 @@ bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vert
   if (!is_polygon_mode(mode) || (flat && !flat_ok) || (l.enabled && l.color_material && per_vertex_color)) {
     return false;
   }
-  if (count > std::size_t(1) << 30) return false;  // 32-bit vertex indices below
   ArrayScratch& m = c.array_scratch;
+  const std::size_t count = m.sequence.size();
   begin_primitive(c, mode);  // fixes the transforms and lights as glBegin does
   Primitive& p = c.prim;
   p.active = false;
   // Every element from the smallest index used to the largest is a vertex (shared
   // vertices are transformed and lit once; unused ones in between cost a little).
-  m.sequence.resize(count);
-  std::size_t lo = SIZE_MAX, hi = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    std::size_t i = index_of(k);
-    m.sequence[k] = std::uint32_t(std::min<std::size_t>(i, UINT32_MAX));
-    lo = std::min(lo, i), hi = std::max(hi, i);
-  }
+  std::uint32_t lo = UINT32_MAX, hi = 0;
+  for (std::uint32_t i : m.sequence) lo = std::min(lo, i), hi = std::max(hi, i);
   if (count == 0 || hi >= UINT32_MAX || hi - lo > 4 * count + 1024) return false;  // sparse: vertex by vertex
-  for (std::uint32_t& v : m.sequence) v -= std::uint32_t(lo);
-  std::size_t n = hi - lo + 1;
+  for (std::uint32_t& v : m.sequence) v -= lo;
+  std::size_t n = std::size_t(hi - lo) + 1;
   const Texture* texture = active_texture(c);
   // Object-space attributes of the range, then eye space in place.
   m.positions.resize(n);

@@ -35,11 +35,10 @@ using ElementLoader = std::function<void(std::size_t first, std::size_t n, glm::
                                          glm::vec4* texcoords)>;
 
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
-/// each element in the draw's index range is loaded and transformed once and lit by the
+/// c.array_scratch.sequence holds the draw's element indices (UINT32_MAX for one that does
+/// not fit); each element in their range is loaded and transformed once and lit by the
 /// pipeline, not once per index. False, with nothing drawn, when the draw must go vertex by
 /// vertex instead (flat quads or polygons, colour material with a colour array, sparse indices).
-bool draw_array_mesh(GlContext& c, GLenum mode, std::size_t count, bool per_vertex_color,
-                     const std::function<std::size_t(std::size_t)>& index_of,
-                     const ElementLoader& load);
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const ElementLoader& load);
 
 }  // namespace shadelab::gl
