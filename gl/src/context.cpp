@@ -52,6 +52,16 @@ void track(Material& m, GLenum mode, const glm::vec4& color) {
 void apply_color_material(GlContext& c) {
   LightingState& l = c.lighting;
   if (!l.color_material) return;
+  if (c.prim.active && c.prim.deferred_lighting) {
+    Material front = l.front, back = l.back;
+    if (l.color_material_face != GL_BACK) track(front, l.color_material_mode, c.current.color);
+    if (l.color_material_face != GL_FRONT) track(back, l.color_material_mode, c.current.color);
+    auto same = [](const Material& a, const Material& b) {
+      return a.ambient == b.ambient && a.diffuse == b.diffuse && a.specular == b.specular &&
+             a.emission == b.emission && a.shininess == b.shininess;
+    };
+    if (!same(front, l.front) || !same(back, l.back)) settle_lighting(c);
+  }
   if (l.color_material_face != GL_BACK) track(l.front, l.color_material_mode, c.current.color);
   if (l.color_material_face != GL_FRONT) track(l.back, l.color_material_mode, c.current.color);
 }

@@ -144,6 +144,7 @@ struct ClientArrays {
 /// the vertex arrived (lighting state cannot change between glBegin and glEnd).
 struct PrimitiveVertex {
   glm::vec4 eye;
+  glm::vec3 normal{0.0f};  // eye space; kept while the primitive's lighting is deferred
   glm::vec4 front, back;
   glm::vec3 front_secondary, back_secondary;
   glm::vec2 texcoord;
@@ -155,6 +156,10 @@ struct Primitive {
   GLenum mode = GL_TRIANGLES;
   std::vector<PrimitiveVertex> vertices;
   bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
+  // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
+  // at glBegin. A material change inside the primitive lights the vertices so far and ends
+  // the deferral (settle_lighting).
+  bool deferred_lighting = false;
   // Fixed at glBegin:
   glm::mat4 modelview{1.0f};
   glm::mat3 normal_matrix{1.0f};
@@ -279,5 +284,9 @@ bool* client_capability_flag(GlContext& c, GLenum cap);
 /// Applies the current colour to the material parameters glColorMaterial selects, when
 /// GL_COLOR_MATERIAL is on (GL 1.1 section 2.13.3).
 void apply_color_material(GlContext& c);
+
+/// Before the material changes inside glBegin/glEnd: lights the primitive's vertices so far
+/// with the material still in force, so later vertices can take the new one (draw.cpp).
+void settle_lighting(GlContext& c);
 
 }  // namespace shadelab::gl

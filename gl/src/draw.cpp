@@ -138,7 +138,7 @@ void light_vertex(const GlContext& c, PrimitiveVertex& v) {
     return;
   }
   glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
-  glm::vec3 n = eye_normal(c, c.current.normal);
+  const glm::vec3& n = v.normal;
   LitColor f = light_point(l.model, c.prim.lights, l.front, {pos, n, nullptr});
   LitColor b = l.model.two_side ? light_point(l.model, c.prim.lights, l.back, {pos, -n, nullptr}) : f;
   v.front = sanitize(f.primary);
@@ -160,12 +160,13 @@ glm::vec2 texcoord(const GlContext& c, glm::vec4 tc) {
 // Arrays for one draw_triangles call.
 struct Batch {
   std::vector<glm::vec4> positions, colors, back_colors;
-  std::vector<glm::vec3> secondary, back_secondary;
+  std::vector<glm::vec3> normals, secondary, back_secondary;
   std::vector<glm::vec2> texcoords;
   std::vector<Triangle> triangles;
 
   std::uint32_t add(const PrimitiveVertex& v) {
     positions.push_back(v.eye);
+    normals.push_back(v.normal);
     colors.push_back(v.front);
     back_colors.push_back(v.back);
     secondary.push_back(v.front_secondary);
@@ -255,14 +256,24 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   if (batch.triangles.empty()) return;
 
   ShadeState shade;
-  shade.lighting = false;  // colours were lit per vertex above
+  shade.lighting = false;  // colours lit per vertex above, unless deferred below
   shade.shading = flat ? ShadingMode::kFlat : ShadingMode::kGouraud;
   shade.texture = active_texture(c);
   shade.texture_env = env_mode(c.textures.env_mode);
-  bool lit = c.lighting.enabled;
+  const LightingState& l = c.lighting;
+  bool lit = l.enabled && !p.deferred_lighting;  // colours lit per vertex above
   VertexInput in;
   in.positions = batch.positions;
-  in.colors = batch.colors;
+  if (p.deferred_lighting) {  // lit by the pipeline with the primitive's one material
+    shade.lighting = true;
+    shade.model = l.model;
+    shade.lights = p.lights;
+    shade.front = l.front;
+    shade.back = l.back;
+    in.normals = batch.normals;
+  } else {
+    in.colors = batch.colors;
+  }
   if (lit && c.lighting.model.two_side) in.back_colors = batch.back_colors;
   if (lit && c.lighting.model.separate_specular) {
     in.secondary_colors = batch.secondary;
@@ -338,13 +349,13 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
     if (c.pipeline && items >= 8192) c.pipeline->parallel_for(items, 4096, fn);
     else fn(0, items);
   };
+  std::atomic<bool> homogeneous{false};
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
     load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], &m.colors[begin],
          texture ? &m.raw_texcoords[begin] : nullptr);
     for (std::size_t v = begin; v < end; ++v) {
       glm::vec4 eye = p.modelview * m.positions[v];
-      // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: the same point.
-      if (eye.w != 1.0f && eye.w != 0.0f) eye /= eye.w;
+      if (eye.w != 1.0f) homogeneous = true;
       m.positions[v] = eye;
       m.finite[v] = finite_clip(projection, eye);
       if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
@@ -352,6 +363,9 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
       if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
     }
   });
+  // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: vertices with w != 1 go
+  // vertex by vertex (nothing is drawn yet).
+  if (homogeneous && l.enabled) return false;
   if (l.enabled) m.colors.clear();
   else m.normals.clear();
   QuadSplit split = QuadSplit::kFromFirst;
@@ -440,6 +454,15 @@ void begin_primitive(GlContext& c, GLenum mode) {
       if (l.enabled) p.lights.push_back(l);
     }
   }
+  // Flat quads take a colour from outside their first triangle: those are lit here.
+  p.deferred_lighting = c.lighting.enabled && !(c.lighting.shade_model == GL_FLAT && mode == GL_QUADS);
+}
+
+void settle_lighting(GlContext& c) {
+  Primitive& p = c.prim;
+  if (!p.deferred_lighting) return;
+  for (PrimitiveVertex& v : p.vertices) light_vertex(c, v);
+  p.deferred_lighting = false;
 }
 
 void emit_vertex(GlContext& c, const glm::vec4& object_position) {
@@ -448,7 +471,10 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   PrimitiveVertex v;
   v.eye = p.modelview * object_position;
   v.texcoord = texcoord(c, c.current.texcoord);
-  light_vertex(c, v);
+  if (c.lighting.enabled) v.normal = eye_normal(c, c.current.normal);
+  // The pipeline lights at xyz, this path at xyz / w: a vertex with w != 1 ends the deferral.
+  if (p.deferred_lighting && v.eye.w != 1.0f) settle_lighting(c);
+  if (!p.deferred_lighting) light_vertex(c, v);
   p.vertices.push_back(v);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
 }

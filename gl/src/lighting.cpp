@@ -157,6 +157,7 @@ void material_call(GLenum face, GLenum pname, const T* params, bool scalar) {
     }
     if (pname == GL_SHININESS && !(v[0] >= 0.0f && v[0] <= 128.0f)) return c.set_error(GL_INVALID_VALUE);
     LightingState& l = c.lighting;
+    if (c.prim.active) settle_lighting(c);  // earlier vertices keep the material they had
     if (face != GL_BACK) set_material(l, l.front, true, pname, v);
     if (face != GL_FRONT) set_material(l, l.back, false, pname, v);
   });
