@@ -6,22 +6,6 @@
  * at (0, 0, 8); GL_LIGHT1's colours set to white (its defaults are black). */
 #include "common/lecture.h"
 
-void wall(int n) {
-  glNormal3f(0., 0., 1.);
-  glBegin(GL_QUADS);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      float x0 = -4. + 8. * i / n, x1 = -4. + 8. * (i + 1) / n;
-      float y0 = -4. + 8. * j / n, y1 = -4. + 8. * (j + 1) / n;
-      glVertex3f(x0, y0, 0.);
-      glVertex3f(x1, y0, 0.);
-      glVertex3f(x1, y1, 0.);
-      glVertex3f(x0, y1, 0.);
-    }
-  }
-  glEnd();
-}
-
 static void panel(const LectureImage* img, int index) {
   double aspect = lecture_panel(img, index, 2, 0, 1);
   glMatrixMode(GL_PROJECTION);

@@ -15,22 +15,6 @@
 
 #include "common/lecture.h"
 
-void wall(int n) { /* the 8 x 8 wall at z = 0 as n x n quads facing +z */
-  glNormal3f(0., 0., 1.);
-  glBegin(GL_QUADS);
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
-      float x0 = -4. + 8. * i / n, x1 = -4. + 8. * (i + 1) / n;
-      float y0 = -4. + 8. * j / n, y1 = -4. + 8. * (j + 1) / n;
-      glVertex3f(x0, y0, 0.);
-      glVertex3f(x1, y0, 0.);
-      glVertex3f(x1, y1, 0.);
-      glVertex3f(x0, y1, 0.);
-    }
-  }
-  glEnd();
-}
-
 /* --- the lecture's code --------------------------------------------------------------- */
 void wallLight() {
   GLfloat ambient0[] = {0., 0., 0., 1.};

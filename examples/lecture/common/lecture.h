@@ -39,6 +39,11 @@ void lecture_perspective(double fovy_degrees, double aspect, double z_near, doub
  * viewport and returns its aspect ratio. */
 double lecture_panel(const LectureImage* img, int index, int count, int row, int rows);
 
+/* The lecture's wall (its mesh-size slides): the 8 x 8 square at z = 0 facing +z, drawn as
+ * n x n GL_QUADS with one normal. Used by the mesh-size, spot, attenuation and
+ * directional-versus-point examples. */
+void wall(int n);
+
 #ifdef __cplusplus
 }
 #endif
