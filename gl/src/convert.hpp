@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace shadelab::gl {
 
@@ -28,6 +29,19 @@ inline GLint round_to_int(double f) {
   r = std::clamp(r, double(std::numeric_limits<GLint>::min()),
                  double(std::numeric_limits<GLint>::max()));
   return GLint(r);
+}
+
+/// glGet*v's output: `n` float values as the caller's type (colours mapped as colours when
+/// `color`, other values rounded, for integer types).
+template <class T>
+void write_gl_values(const float* v, int n, bool color, T* out) {
+  for (int i = 0; i < n; ++i) {
+    if constexpr (std::is_integral_v<T>) {
+      out[i] = color ? color_to_int(v[i]) : round_to_int(v[i]);
+    } else {
+      out[i] = v[i];
+    }
+  }
 }
 
 /// NaN becomes 0; everything else is kept (colours are clamped later).

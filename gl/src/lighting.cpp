@@ -204,17 +204,6 @@ int get_material(const Material& m, GLenum pname, float* out, bool& color) {
 }
 
 template <class T>
-void write_values(const float* v, int n, bool color, T* out) {
-  for (int i = 0; i < n; ++i) {
-    if constexpr (std::is_integral_v<T>) {
-      out[i] = color ? color_to_int(v[i]) : round_to_int(v[i]);
-    } else {
-      out[i] = v[i];
-    }
-  }
-}
-
-template <class T>
 void get_light_call(GLenum light, GLenum pname, T* params) {
   outside_begin_end([&](GlContext& c) {
     if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) return c.set_error(GL_INVALID_ENUM);
@@ -223,7 +212,7 @@ void get_light_call(GLenum light, GLenum pname, T* params) {
     int n = get_light(c.lighting.lights[light - GL_LIGHT0], pname, v, color);
     if (n == 0) return c.set_error(GL_INVALID_ENUM);
     if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_values(v, n, color, params);
+    write_gl_values(v, n, color, params);
   });
 }
 
@@ -236,7 +225,7 @@ void get_material_call(GLenum face, GLenum pname, T* params) {
     int n = get_material(face == GL_FRONT ? c.lighting.front : c.lighting.back, pname, v, color);
     if (n == 0) return c.set_error(GL_INVALID_ENUM);
     if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_values(v, n, color, params);
+    write_gl_values(v, n, color, params);
   });
 }
 

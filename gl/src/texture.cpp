@@ -175,17 +175,6 @@ void tex_env(GLenum target, GLenum pname, const float* v, int n) {
 }
 
 template <class T>
-void write_out(const float* v, int n, bool color, T* out) {
-  for (int i = 0; i < n; ++i) {
-    if constexpr (std::is_integral_v<T>) {
-      out[i] = color ? color_to_int(v[i]) : round_to_int(v[i]);
-    } else {
-      out[i] = v[i];
-    }
-  }
-}
-
-template <class T>
 void get_tex_env(GLenum target, GLenum pname, T* params) {
   outside_begin_end([&](GlContext& c) {
     if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
@@ -198,7 +187,7 @@ void get_tex_env(GLenum target, GLenum pname, T* params) {
       return c.set_error(GL_INVALID_ENUM);
     }
     if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_out(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
+    write_gl_values(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
   });
 }
 
@@ -211,7 +200,7 @@ void get_tex_parameter_call(GLenum target, GLenum pname, T* params) {
     int n = get_tex_parameter(*c.textures.bound, pname, v, color);
     if (n == 0) return c.set_error(GL_INVALID_ENUM);
     if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_out(v, n, color, params);
+    write_gl_values(v, n, color, params);
   });
 }
 

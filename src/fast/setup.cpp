@@ -89,16 +89,14 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   }
 }
 
-// draw.cpp's to_window for a clipped vertex.
-RasterVertex to_window(const ClipVertex& v, const Viewport& vp) {
-  float inv_w = 1.0f / v.clip.w;
-  double nx = double(v.clip.x) * inv_w, ny = double(v.clip.y) * inv_w;
-  float nz = v.clip.z * inv_w;
+// draw.cpp's to_window for a clipped vertex, snapped.
+RasterVertex raster_vertex(const ClipVertex& v, const Viewport& vp) {
+  detail::WindowVertex r = detail::to_window(v, vp);
   RasterVertex w;
-  w.x = (nx + 1.0) * 0.5 * vp.width + vp.x;
-  w.y = (ny + 1.0) * 0.5 * vp.height + vp.y;
-  w.z = nz * 0.5f * (vp.far_depth - vp.near_depth) + 0.5f * (vp.far_depth + vp.near_depth);
-  w.inv_w = inv_w;
+  w.x = r.x;
+  w.y = r.y;
+  w.z = r.z;
+  w.inv_w = r.inv_w;
   detail::FixedPoint s = detail::snap(w.x, w.y);
   w.sx = std::int32_t(s.x);
   w.sy = std::int32_t(s.y);
@@ -125,7 +123,7 @@ void setup_clipped(const DrawJob& job, SetupChunk& chunk, const Triangle& tri) {
   if (n == 0) return;
   std::size_t base = chunk.clip_vertices.size();
   for (const ClipVertex& cv : chunk.poly) {
-    chunk.clip_vertices.push_back(to_window(cv, job.viewport));
+    chunk.clip_vertices.push_back(raster_vertex(cv, job.viewport));
     chunk.clip_varyings.resize(chunk.clip_varyings.size() + std::size_t(l.count));
     compact_varyings(l, cv.attr, &chunk.clip_varyings[chunk.clip_varyings.size() - l.count]);
   }

@@ -89,18 +89,6 @@ std::vector<ClipVertex> vertex_stage(const glm::mat4& projection, const ShadeSta
   return out;
 }
 
-WindowVertex to_window(const ClipVertex& v, const Viewport& vp) {
-  float inv_w = 1.0f / v.clip.w;
-  double nx = double(v.clip.x) * inv_w, ny = double(v.clip.y) * inv_w;
-  float nz = v.clip.z * inv_w;
-  WindowVertex w;
-  w.x = (nx + 1.0) * 0.5 * vp.width + vp.x;
-  w.y = (ny + 1.0) * 0.5 * vp.height + vp.y;
-  w.z = nz * 0.5f * (vp.far_depth - vp.near_depth) + 0.5f * (vp.far_depth + vp.near_depth);
-  w.inv_w = inv_w;
-  w.attr = &v.attr;
-  return w;
-}
 
 // Twice the signed window-space area of a polygon (positive: counter-clockwise).
 double signed_area(const std::vector<WindowVertex>& w) {
@@ -114,6 +102,20 @@ double signed_area(const std::vector<WindowVertex>& w) {
 }
 
 }  // namespace
+
+// Viewport mapping (GL 1.1 section 2.10.1) of a clipped vertex, in double for x and y.
+WindowVertex detail::to_window(const ClipVertex& v, const Viewport& vp) {
+  float inv_w = 1.0f / v.clip.w;
+  double nx = double(v.clip.x) * inv_w, ny = double(v.clip.y) * inv_w;
+  float nz = v.clip.z * inv_w;
+  WindowVertex w;
+  w.x = (nx + 1.0) * 0.5 * vp.width + vp.x;
+  w.y = (ny + 1.0) * 0.5 * vp.height + vp.y;
+  w.z = nz * 0.5f * (vp.far_depth - vp.near_depth) + 0.5f * (vp.far_depth + vp.near_depth);
+  w.inv_w = inv_w;
+  w.attr = &v.attr;
+  return w;
+}
 
 // glPolygonOffset: factor * max depth slope + units * r, r the smallest resolvable depth step
 // of a 24-bit depth buffer (GL 1.5 section 3.5.5).

@@ -52,6 +52,9 @@ struct Fragment {
   float ds_dx = 0, dt_dx = 0, ds_dy = 0, dt_dy = 0;
 };
 
+/// The viewport mapping of a clipped vertex (draw.cpp); its attributes stay in `v`.
+WindowVertex to_window(const ClipVertex& v, const Viewport& vp);
+
 /// glPolygonOffset's depth offset for the window-space triangle a, b, c (draw.cpp).
 float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
                      const FragmentState& f);
