@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <mutex>
 
 #include "gl/src/convert.hpp"
 #include "gl/src/draw.hpp"
@@ -122,10 +123,22 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   };
   std::vector<std::uint32_t>& sequence = c.array_scratch.sequence;
   sequence.resize(count);
-  for (std::size_t k = 0; k < count; ++k) {
-    sequence[k] = std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
-  }
-  if (draw_array_mesh(c, mode, usable(a.color), load)) return;
+  std::uint32_t lo = UINT32_MAX, hi = 0;
+  std::mutex bounds;
+  auto gather = [&](std::size_t begin, std::size_t end) {  // indices and their range
+    std::uint32_t l = UINT32_MAX, h = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+      std::uint32_t i = std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
+      sequence[k] = i;
+      l = std::min(l, i), h = std::max(h, i);
+    }
+    std::lock_guard<std::mutex> lock(bounds);
+    lo = std::min(lo, l), hi = std::max(hi, h);
+  };
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  if (c.pipeline && count >= (1u << 16)) c.pipeline->parallel_for(count, 1u << 15, gather);
+  else gather(0, count);
+  if (draw_array_mesh(c, mode, usable(a.color), lo, hi, load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);

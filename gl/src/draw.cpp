@@ -313,7 +313,8 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 
 }  // namespace
 
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const ElementLoader& load) {
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint32_t lo,
+                     std::uint32_t hi, const ElementLoader& load) {
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
@@ -329,10 +330,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
   p.active = false;
   // Every element from the smallest index used to the largest is a vertex (shared
   // vertices are transformed and lit once; unused ones in between cost a little).
-  std::uint32_t lo = UINT32_MAX, hi = 0;
-  for (std::uint32_t i : m.sequence) lo = std::min(lo, i), hi = std::max(hi, i);
   if (count == 0 || hi >= UINT32_MAX || hi - lo > 4 * count + 1024) return false;  // sparse: vertex by vertex
-  for (std::uint32_t& v : m.sequence) v -= lo;
   std::size_t n = std::size_t(hi - lo) + 1;
   const Texture* texture = active_texture(c);
   // Object-space attributes of the range, then eye space in place.
@@ -371,7 +369,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
   QuadSplit split = QuadSplit::kFromFirst;
   if (mode == GL_QUADS) {
     for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {
-      glm::vec4 v = projection * m.positions[m.sequence[k]];
+      glm::vec4 v = projection * m.positions[m.sequence[k] - lo];
       bool inside = -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
       if (!inside) split = QuadSplit::kFromSecond;
     }
@@ -388,7 +386,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
     in_parallel(tris, [&](std::size_t begin, std::size_t end) {
       bool drop = false;
       for (std::size_t t = begin; t < end; ++t) {
-        Triangle tri{m.sequence[3 * t], m.sequence[3 * t + 1], m.sequence[3 * t + 2]};
+        Triangle tri{m.sequence[3 * t] - lo, m.sequence[3 * t + 1] - lo, m.sequence[3 * t + 2] - lo};
         m.triangles[t] = tri;
         drop = drop || !(m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]);
       }
@@ -404,8 +402,8 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const Ele
     decompose(mode, std::uint32_t(count), false, split, m.pieces);
     for (const PrimitiveTriangle& t : m.pieces) {
       PrimitiveTriangle u = t;
-      for (std::uint32_t& v : u.v) v = m.sequence[v];
-      u.provoking = m.sequence[t.provoking];
+      for (std::uint32_t& v : u.v) v = m.sequence[v] - lo;
+      u.provoking = m.sequence[t.provoking] - lo;
       Triangle tri{u.v[0], u.v[1], u.v[2]};
       if (flat && !provoking_last(u, tri)) continue;  // not reached: flat_ok above
       add(tri);

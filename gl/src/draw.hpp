@@ -36,9 +36,11 @@ using ElementLoader = std::function<void(std::size_t first, std::size_t n, glm::
 
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
 /// c.array_scratch.sequence holds the draw's element indices (UINT32_MAX for one that does
-/// not fit); each element in their range is loaded and transformed once and lit by the
-/// pipeline, not once per index. False, with nothing drawn, when the draw must go vertex by
-/// vertex instead (flat quads or polygons, colour material with a colour array, sparse indices).
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, const ElementLoader& load);
+/// not fit), lo and hi the smallest and largest; each element in that range is loaded and
+/// transformed once and lit by the pipeline, not once per index. False, with nothing drawn,
+/// when the draw must go vertex by vertex instead (flat quads or polygons, colour material with
+/// a colour array, sparse indices, w != 1).
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint32_t lo,
+                     std::uint32_t hi, const ElementLoader& load);
 
 }  // namespace shadelab::gl
