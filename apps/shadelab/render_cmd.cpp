@@ -23,6 +23,7 @@ struct RenderArgs {
   bool stats = false;
   bool reference = false;
   int threads = 0;
+  LoadOptions limits;  // only the max_* fields
 };
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -44,7 +45,7 @@ void print_stats(const RenderStats& s, const Scene& scene) {
 }
 
 int run_render(const RenderArgs& args) {
-  LoadOptions options;
+  LoadOptions options = args.limits;
   options.overrides = args.overrides;
   // Through the scene's own validation, so limits and messages are the same.
   if (!args.size.empty() && !add_size_overrides(args.size, "render", options.overrides)) {
@@ -98,6 +99,14 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::Range(1, 64));
   cmd->add_flag("--stats", args->stats, "Print triangle and pixel counts and time per stage");
   cmd->add_flag("--reference", args->reference, "Draw with the simple reference pipeline");
+  cmd->add_option("--max-pixels", args->limits.max_pixels,
+                  "Limit on width x height x samples (default 268435456)")
+      ->check(CLI::Range(1LL, 1LL << 32));
+  cmd->add_option("--max-triangles", args->limits.max_triangles,
+                  "Limit on triangles after tessellation (default 20000000)")
+      ->check(CLI::Range(1LL, 1LL << 31));
+  cmd->add_option("--max-lights", args->limits.max_lights, "Limit on lights (default 1024)")
+      ->check(CLI::Range(1, 1 << 20));
   cmd->add_option("--threads", args->threads,
                   "Fast pipeline threads (default: $SHADELAB_THREADS, else all cores)")
       ->check(CLI::Range(1, 256));

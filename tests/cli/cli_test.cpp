@@ -72,6 +72,23 @@ TEST(Cli, BadOverrideValueIsReportedAgainstSet) {
   EXPECT_EQ(r.err, "--set: lights[0].spot.cutoff: 200 is out of range (0..90, or 180)\n");
 }
 
+// The limits against hostile input are the user's to change, and say what was exceeded.
+TEST(Cli, LimitsCanBeLoweredAndAreReportedWithTheirValue) {
+  std::string out = fresh_output("cli_limits.png");
+  auto r = run_cli("render scenes/teapot.json --max-triangles 1000 -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "scenes/teapot.json:19:16: objects[0].shape: the scene would have 9216 triangles, "
+                   "more than the limit of 1000\n");
+  r = run_cli("render scenes/teapot.json --max-pixels 1000 -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_EQ(r.err, "scenes/teapot.json:3:12: image: 640 x 480 = 307200 pixels, more than the limit of 1000\n");
+  r = run_cli("render scenes/teapot.json --max-lights 0 -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 2);  // out of the option's range
+  EXPECT_FALSE(fs::exists(out));
+  r = run_cli("render scenes/teapot.json --size 64x48 --max-triangles 10000 -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+}
+
 TEST(Cli, OverrideChangesTheImage) {
   std::string a = fresh_output("cli_set_a.png"), b = fresh_output("cli_set_b.png");
   ASSERT_EQ(run_cli("render scenes/teapot.json --size 48x36 -o '" + a + "'").exit_status, 0);
