@@ -11,9 +11,10 @@ cd "$(dirname "$0")/.."
 PACKAGES=(
   build-essential cmake ninja-build pkg-config
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
-  libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev
+  libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
   gnuplot-nox     # bench/run.sh plots
+  chromium nodejs  # the lab's browser tests (playwright-core from npm drives Chromium)
 )
 
 install_packages() {
@@ -31,6 +32,13 @@ install_packages() {
 }
 
 build() {
+  # playwright-core for the lab's browser tests, at the version package-lock.json pins (npm
+  # comes with some nodejs packages; Debian's is installed only when it is missing).
+  if ! command -v npm >/dev/null; then
+    PACKAGES=(npm)
+    install_packages
+  fi
+  (cd tests/lab/browser && npm ci --no-audit --no-fund --loglevel=error)
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
   cmake --build build
 }

@@ -33,5 +33,6 @@ Action add_sweep_command(CLI::App& app);
 Action add_materials_command(CLI::App& app);
 Action add_gallery_command(CLI::App& app);
 Action add_shadow_matrix_command(CLI::App& app);
+Action add_serve_command(CLI::App& app);
 
 }  // namespace shadelab::cli

@@ -18,6 +18,7 @@ constexpr Command kCommands[] = {
     {"materials", shadelab::cli::add_materials_command},
     {"gallery", shadelab::cli::add_gallery_command},
     {"shadow-matrix", shadelab::cli::add_shadow_matrix_command},
+    {"serve", shadelab::cli::add_serve_command},
 };
 
 }  // namespace

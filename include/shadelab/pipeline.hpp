@@ -155,6 +155,7 @@ struct RenderStats {
   std::uint64_t fragments = 0;        ///< covered samples that reached the depth test
   std::uint64_t pixels_shaded = 0;    ///< fragments that passed depth and were written
   double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
+  bool interrupted = false;  ///< render_scene stopped at RenderOptions::deadline
 };
 
 /// The fast pipeline's worker threads and reusable buffers (src/fast/, docs/performance.md).

@@ -2,6 +2,7 @@
 // Orders the draws (opaque first, then blended objects back to front) and never prints.
 #pragma once
 
+#include <chrono>
 #include <optional>
 
 #include "shadelab/image.hpp"
@@ -18,6 +19,9 @@ struct RenderOptions {
   /// A fast-pipeline context kept across frames (no per-frame thread start or allocation);
   /// null: render_scene makes one for the frame. Ignored with `reference`.
   PipelineContext* context = nullptr;
+  /// When set, objects not yet drawn by then are left out and RenderStats::interrupted is set
+  /// (the lab's render time limit); an object already being drawn is finished.
+  std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt;
 };
 
 /// Renders `scene` at scene.width x scene.height.

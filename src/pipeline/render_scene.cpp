@@ -224,6 +224,10 @@ Image render_scene(const Scene& scene, const RenderOptions& requested, RenderSta
   FragmentCapture capture;
   bool shadows_drawn = false;
   for (const SceneObject* obj : draw_order(scene, view)) {
+    if (options.deadline && std::chrono::steady_clock::now() > *options.deadline) {
+      if (stats) stats->interrupted = true;
+      break;
+    }
     // Shadows go on the opaque picture, before anything blended is drawn over it.
     if (obj->blend.enabled && !shadows_drawn) {
       for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);

@@ -125,3 +125,27 @@ TEST(RenderAnalytic, TransparentObjectBlendsOverOpaque) {
 
 }  // namespace
 }  // namespace shadelab
+
+namespace shadelab {
+namespace {
+
+// The lab's render time limit: objects not started by the deadline are left out, and said so.
+TEST(RenderDeadline, ObjectsAfterTheDeadlineAreNotDrawn) {
+  Scene s = wall_scene(1, 16);
+  s.background = {0.0f, 0.0f, 1.0f, 1.0f};
+  RenderOptions late;
+  late.deadline = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  RenderStats stats;
+  Image img = render_scene(s, late, &stats);
+  EXPECT_TRUE(stats.interrupted);
+  EXPECT_EQ(img.pixel(8, 8)[2], 255);  // only the background
+  RenderOptions in_time;
+  in_time.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+  RenderStats ok;
+  img = render_scene(s, in_time, &ok);
+  EXPECT_FALSE(ok.interrupted);
+  EXPECT_NE(img.pixel(8, 8)[2], 255);  // the wall
+}
+
+}  // namespace
+}  // namespace shadelab

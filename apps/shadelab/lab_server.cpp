@@ -1,0 +1,236 @@
+// The lighting lab's server: embedded page assets and the JSON API (docs/lab.md). Scenes come
+// in as scene-file JSON and go through the same reader as the command line, so a bad value
+// gets the same message, with its key path, as a 400 answer; renders run on the server's
+// worker threads, each with its own pipeline.
+#include "lab_server.hpp"
+
+#include <httplib.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "lab_assets.hpp"
+#include "shadelab/explain.hpp"
+#include "shadelab/image.hpp"
+#include "shadelab/materials.hpp"
+#include "shadelab/render.hpp"
+#include "shadelab/scene_io.hpp"
+
+namespace shadelab::cli {
+
+namespace {
+
+using json = nlohmann::json;
+namespace fs = std::filesystem;
+
+json diagnostics_json(const Diagnostics& d) {
+  json errors = json::array();
+  for (const Diagnostic& e : d.items()) {
+    errors.push_back({{"path", e.key_path},
+                      {"line", e.location.line},
+                      {"column", e.location.column},
+                      {"message", e.message},
+                      {"text", e.to_string()}});
+  }
+  return errors;
+}
+
+void send_error(httplib::Response& res, int status, const std::string& message,
+                json errors = json::array()) {
+  if (errors.empty()) errors.push_back({{"path", ""}, {"message", message}, {"text", message}});
+  res.status = status;
+  res.set_content(json{{"error", message}, {"errors", errors}}.dump(), "application/json");
+}
+
+json color_json(const glm::vec3& c) { return {c.r, c.g, c.b}; }
+json color_json(const glm::vec4& c) { return {c.r, c.g, c.b, c.a}; }
+
+json material_json(const Material& m) {
+  return {{"ambient", color_json(m.ambient)},
+          {"diffuse", color_json(m.diffuse)},
+          {"specular", color_json(m.specular)},
+          {"emission", color_json(m.emission)},
+          {"shininess", m.shininess}};
+}
+
+class Lab {
+ public:
+  explicit Lab(const LabOptions& o) : options_(o) {
+    base_dir_ = o.scene_path.empty() ? fs::path(".") : fs::path(o.scene_path).parent_path();
+    if (base_dir_.empty()) base_dir_ = ".";
+  }
+
+  // Parses a scene sent by the page; on failure answers 400 and returns nothing.
+  std::optional<Scene> scene_from(const std::string& text, httplib::Response& res,
+                                  const std::vector<std::string>& overrides = {}) const {
+    LoadOptions load;
+    load.overrides = overrides;
+    load.max_pixels = options_.max_pixels;
+    load.max_triangles = options_.max_triangles;
+    load.max_lights = options_.max_lights;
+    LoadResult r = parse_scene(text, "scene", base_dir_.string(), load);
+    if (!r.scene) {
+      send_error(res, 400, "the scene has errors", diagnostics_json(r.diagnostics));
+      return std::nullopt;
+    }
+    return std::move(*r.scene);
+  }
+
+  void render(const httplib::Request& req, httplib::Response& res) const {
+    std::vector<std::string> overrides;
+    RenderOptions ro;
+    ro.threads = 1;  // one thread per request: the server's pool serves clients side by side
+    if (req.has_param("shading")) {
+      std::string s = req.get_param_value("shading");
+      if (s == "flat") ro.shading = ShadingMode::kFlat;
+      else if (s == "gouraud") ro.shading = ShadingMode::kGouraud;
+      else if (s == "phong") ro.shading = ShadingMode::kPhong;
+      else return send_error(res, 400, "shading: expected flat, gouraud or phong, got \"" + s + "\"");
+    }
+    std::optional<Scene> scene = scene_from(req.body, res, overrides);
+    if (!scene) return;
+    auto start = std::chrono::steady_clock::now();
+    ro.deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(options_.max_render_seconds));
+    RenderStats stats;
+    Image img = render_scene(*scene, ro, &stats);
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (stats.interrupted) {
+      return send_error(res, 503, "the render took longer than the lab's limit of " +
+                                      std::to_string(options_.max_render_seconds) + " s");
+    }
+    std::vector<std::uint8_t> png = encode_png(img);
+    res.set_header("X-Render-Ms", std::to_string(ms));
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(std::string(png.begin(), png.end()), "image/png");
+  }
+
+  void explain(const httplib::Request& req, httplib::Response& res) const {
+    json body = json::parse(req.body, nullptr, false);
+    if (body.is_discarded() || !body.is_object()) return send_error(res, 400, "expected a JSON object {scene, x, y}");
+    if (!body.contains("scene") || !body["scene"].is_object()) return send_error(res, 400, "scene: expected the scene object");
+    if (!body.contains("x") || !body["x"].is_number_integer() || !body.contains("y") || !body["y"].is_number_integer()) {
+      return send_error(res, 400, "x, y: expected the pixel's integer coordinates");
+    }
+    std::optional<Scene> scene = scene_from(body["scene"].dump(), res);
+    if (!scene) return;
+    long long x = body["x"].get<long long>(), y = body["y"].get<long long>();
+    if (x < 0 || y < 0 || x >= scene->width || y >= scene->height) {
+      return send_error(res, 400, "x, y: the pixel lies outside the image");
+    }
+    std::optional<PixelExplanation> e = explain_pixel(*scene, int(x), int(y));
+    if (!e) {
+      res.set_content(json{{"hit", false}, {"background", color_json(scene->background)}}.dump(),
+                      "application/json");
+      return;
+    }
+    const LightingBreakdown& b = e->breakdown;
+    json lights = json::array();
+    for (const LightTerm& t : b.lights) {
+      lights.push_back({{"light", t.light},
+                        {"attenuation", t.attenuation},
+                        {"spot", t.spot},
+                        {"n_dot_l", t.n_dot_l},
+                        {"ambient", color_json(t.ambient)},
+                        {"diffuse", color_json(t.diffuse)},
+                        {"specular", color_json(t.specular)}});
+    }
+    const char* shading = e->shading == ShadingMode::kFlat      ? "flat"
+                          : e->shading == ShadingMode::kGouraud ? "gouraud"
+                                                                : "phong";
+    res.set_content(json{{"hit", true},
+                         {"object", e->object},
+                         {"shading", shading},
+                         {"lit", e->lit},
+                         {"back_face", e->back_face},
+                         {"position", color_json(e->position)},
+                         {"normal", color_json(e->normal)},
+                         {"emission", color_json(b.emission)},
+                         {"global_ambient", color_json(b.global_ambient)},
+                         {"lights", lights},
+                         {"unclamped", color_json(b.unclamped)},
+                         {"result", color_json(b.result.primary)},
+                         {"secondary", color_json(b.result.secondary)}}
+                        .dump(),
+                    "application/json");
+  }
+
+  void presets(httplib::Response& res) const {
+    json list = json::array();
+    for (const MaterialPreset& p : material_presets()) {
+      list.push_back({{"name", p.name}, {"description", p.description}, {"material", material_json(p.material)}});
+    }
+    res.set_content(list.dump(), "application/json");
+  }
+
+  // The built-in shapes the page offers, and the OBJ files beside the served scene.
+  void shapes(httplib::Response& res) const {
+    json objs = json::array();
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(base_dir_, ec)) {
+      if (entry.is_regular_file(ec) && entry.path().extension() == ".obj") {
+        objs.push_back(entry.path().filename().string());
+      }
+    }
+    std::sort(objs.begin(), objs.end());
+    res.set_content(json{{"shapes", {"teapot", "sphere", "torus", "cylinder", "cone", "cube", "wall"}},
+                         {"obj_files", objs}}
+                        .dump(),
+                    "application/json");
+  }
+
+  void scene(httplib::Response& res) const { res.set_content(options_.scene_text, "application/json"); }
+
+ private:
+  LabOptions options_;
+  fs::path base_dir_;
+};
+
+}  // namespace
+
+int run_lab_server(const LabOptions& options) {
+  Lab lab(options);
+  httplib::Server server;
+  server.new_task_queue = [] { return new httplib::ThreadPool(8); };
+  server.set_payload_max_length(options.max_body);
+  server.set_read_timeout(10, 0);
+  server.set_write_timeout(10, 0);
+  for (const LabAsset& a : lab_assets()) {
+    std::string path = a.name == "index.html" ? "/" : "/" + a.name;
+    server.Get(path, [&a](const httplib::Request&, httplib::Response& res) {
+      res.set_content(std::string(a.data), a.mime);
+    });
+  }
+  server.Post("/api/render", [&](const httplib::Request& q, httplib::Response& r) { lab.render(q, r); });
+  server.Post("/api/explain", [&](const httplib::Request& q, httplib::Response& r) { lab.explain(q, r); });
+  server.Get("/api/presets", [&](const httplib::Request&, httplib::Response& r) { lab.presets(r); });
+  server.Get("/api/shapes", [&](const httplib::Request&, httplib::Response& r) { lab.shapes(r); });
+  server.Get("/api/scene", [&](const httplib::Request&, httplib::Response& r) { lab.scene(r); });
+  server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
+    send_error(res, 500, "internal error");
+  });
+  server.set_error_handler([](const httplib::Request&, httplib::Response& res) {
+    if (res.body.empty()) {
+      send_error(res, res.status, res.status == 413 ? "the request is too large" : "not found");
+    }
+  });
+  int port = options.port;
+  if (port == 0) {
+    port = server.bind_to_any_port(options.host);
+  } else if (!server.bind_to_port(options.host, port)) {
+    port = -1;
+  }
+  if (port < 0) {
+    std::fprintf(stderr, "shadelab serve: cannot listen on %s:%d\n", options.host.c_str(), options.port);
+    return 1;
+  }
+  std::printf("shadelab lab: open http://%s:%d/\n", options.host.c_str(), port);
+  std::fflush(stdout);
+  return server.listen_after_bind() ? 0 : 1;
+}
+
+}  // namespace shadelab::cli

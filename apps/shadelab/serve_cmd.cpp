@@ -1,0 +1,75 @@
+// shadelab serve: the lighting lab in the browser (docs/lab.md).
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "commands.hpp"
+#include "lab_server.hpp"
+
+namespace shadelab::cli {
+
+namespace {
+
+struct ServeArgs {
+  std::string scene;
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  LabOptions limits;  // only the max_* fields
+};
+
+// The default scene: the lecture's Lighting Controls panel (9 lights on a sphere).
+std::string default_scene_path() {
+  for (const char* p : {"scenes/lecture/18-lighting-controls.json"}) {
+    if (std::filesystem::exists(p)) return p;
+  }
+  return "";
+}
+
+int run_serve(const ServeArgs& args) {
+  LabOptions o = args.limits;
+  o.host = args.host;
+  o.port = args.port;
+  o.scene_path = args.scene.empty() ? default_scene_path() : args.scene;
+  if (o.scene_path.empty()) {
+    std::cerr << "shadelab serve: no scene given and scenes/lecture/18-lighting-controls.json "
+                 "is not here; name a scene file\n";
+    return kExitBadInput;
+  }
+  std::ifstream in(o.scene_path, std::ios::binary);
+  if (!in) {
+    std::cerr << o.scene_path << ": cannot open scene file\n";
+    return kExitBadInput;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  o.scene_text = text.str();
+  return run_lab_server(o);
+}
+
+}  // namespace
+
+Action add_serve_command(CLI::App& app) {
+  auto args = std::make_shared<ServeArgs>();
+  CLI::App* cmd = app.add_subcommand("serve", "The lighting lab: the lecture's Lighting Controls panel in the browser");
+  cmd->add_option("scene", args->scene,
+                  "Scene to start from (default: the lecture's panel, scenes/lecture/18-lighting-controls.json)");
+  cmd->add_option("--host", args->host,
+                  "Address to listen on (default 127.0.0.1: this machine only; 0.0.0.0 serves every network)");
+  cmd->add_option("--port", args->port, "Port (default 8080; 0 picks a free one)")->check(CLI::Range(0, 65535));
+  cmd->add_option("--max-pixels", args->limits.max_pixels, "Limit per render: width x height x samples (default 1048576)")
+      ->check(CLI::Range(1LL, 1LL << 28));
+  cmd->add_option("--max-triangles", args->limits.max_triangles, "Limit per render: triangles (default 2000000)")
+      ->check(CLI::Range(1LL, 20'000'000LL));
+  cmd->add_option("--max-lights", args->limits.max_lights, "Limit per render: lights (default 64)")
+      ->check(CLI::Range(1, 1024));
+  cmd->add_option("--max-render-seconds", args->limits.max_render_seconds,
+                  "Limit per render: objects not started by then are left out and the request fails (default 10)")
+      ->check(CLI::Range(0.001, 3600.0));
+  cmd->add_option("--max-body", args->limits.max_body, "Limit on a request's size in bytes (default 1048576)")
+      ->check(CLI::Range(std::size_t(1024), std::size_t(1) << 30));
+  cmd->footer("Example:\n  shadelab serve            then open http://127.0.0.1:8080/");
+  return [args] { return run_serve(*args); };
+}
+
+}  // namespace shadelab::cli
