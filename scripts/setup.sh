@@ -14,7 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
   gnuplot-nox     # bench/run.sh plots
-  chromium nodejs  # the lab's browser tests (playwright-core from npm drives Chromium)
+  chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)
 )
 
 install_packages() {

@@ -184,6 +184,7 @@ function refresh() {
   const sh = state.scene.objects[0].shape;
   $("shape").value = sh.type === "mesh" ? "obj:" + sh.file : sh.type;
   $("tessellation").value = state.tess;
+  $("tessellation-range").value = Math.min(state.tess, 64);
 }
 function applyShape() {
   const v = $("shape").value, t = Math.max(1, Math.round(Number($("tessellation").value) || 1));
@@ -400,7 +401,11 @@ async function start() {
     buildLights(); refresh(); changed();
   });
   $("shape").addEventListener("change", () => { applyShape(); changed(); });
-  $("tessellation").addEventListener("change", () => { applyShape(); changed(); });
+  $("tessellation").addEventListener("change", () => { applyShape(); refresh(); changed(); });
+  $("tessellation-range").addEventListener("input", () => {
+    $("tessellation").value = $("tessellation-range").value;
+    applyShape(); changed();
+  });
   $("preset").addEventListener("change", () => {
     const p = state.presets.find((x) => x.name === $("preset").value);
     if (!p) return;
