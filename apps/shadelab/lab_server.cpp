@@ -72,6 +72,7 @@ class Lab {
     load.max_pixels = options_.max_pixels;
     load.max_triangles = options_.max_triangles;
     load.max_lights = options_.max_lights;
+    load.confine_files = true;  // OBJ and texture files only from the served scene's folder
     LoadResult r = parse_scene(text, "scene", base_dir_.string(), load);
     if (!r.scene) {
       send_error(res, 400, "the scene has errors", diagnostics_json(r.diagnostics));

@@ -21,6 +21,9 @@ struct LoadOptions {
   long long max_pixels = 16384LL * 16384LL;
   long long max_triangles = 20'000'000;
   int max_lights = 1024;
+  /// Mesh and texture files must lie inside the scene's folder (after symbolic links are
+  /// followed): for scenes from untrusted sources, such as the lab's requests.
+  bool confine_files = false;
 };
 
 struct LoadResult {

@@ -71,6 +71,7 @@ std::shared_ptr<const Texture> SceneReader::load_texture(const JsonValue& file, 
                                                          const Texture& settings) {
   if (!r_.is_type(file, Type::kString, path)) return nullptr;
   std::string full = resolve(file.text);
+  if (!confined(file, path, full)) return nullptr;
   std::string key = full + "|" + std::to_string(int(settings.wrap_s)) + "|" +
                     std::to_string(int(settings.min_filter)) + "|" + std::to_string(int(settings.mag_filter));
   if (auto it = textures_.find(key); it != textures_.end()) return it->second;

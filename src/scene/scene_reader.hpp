@@ -64,6 +64,9 @@ class SceneReader {
   bool within_limit(const JsonValue& at, const std::string& path, long long triangles);
   bool count(const JsonValue& at, const std::string& path, long long triangles);
   std::string resolve(const std::string& relative) const;
+  /// With LoadOptions::confine_files, false (and an error at `at`) when `full` lies outside
+  /// the scene's folder.
+  bool confined(const JsonValue& at, const std::string& path, const std::string& full);
 
   // extras_reader.cpp
   void texture(const JsonValue& v, const std::string& path, SceneObject& o);

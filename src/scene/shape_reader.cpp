@@ -218,6 +218,17 @@ std::string SceneReader::resolve(const std::string& relative) const {
   return (std::filesystem::path(base_dir_) / relative).lexically_normal().string();
 }
 
+bool SceneReader::confined(const JsonValue& at, const std::string& path, const std::string& full) {
+  if (!options_.confine_files) return true;
+  std::error_code ec;
+  std::filesystem::path folder = std::filesystem::weakly_canonical(base_dir_.empty() ? "." : base_dir_, ec);
+  std::filesystem::path file = std::filesystem::weakly_canonical(full, ec);
+  auto [end, _] = std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+  if (!ec && end == folder.end()) return true;
+  r_.error(at, path, "\"" + at.text + "\" is outside the scene's folder");
+  return false;
+}
+
 // A Wavefront OBJ file, relative to the scene's folder; each file is loaded once and shared.
 std::shared_ptr<const Mesh> SceneReader::mesh_file(const JsonValue& params, const std::string& path) {
   const JsonValue* file = params.find("file");
@@ -228,6 +239,7 @@ std::shared_ptr<const Mesh> SceneReader::mesh_file(const JsonValue& params, cons
   }
   if (!r_.is_type(*file, Type::kString, file_path)) return nullptr;
   std::string full = resolve(file->text);
+  if (!confined(*file, file_path, full)) return nullptr;
   if (auto it = meshes_.find(full); it != meshes_.end()) {
     return count(*file, file_path, (long long)it->second->triangles.size()) ? it->second : nullptr;
   }

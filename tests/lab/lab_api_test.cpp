@@ -204,6 +204,10 @@ TEST(LabApi, BadInputGets400WithTheCommandLinesDiagnostics) {
   EXPECT_NE(e["errors"][0]["message"].get<std::string>().find("limit"), std::string::npos);
   e = error_of("/api/render", "{\"image\": ");  // truncated JSON
   EXPECT_EQ(e["errors"][0]["line"], 1);
+  // Files only from the served scene's folder.
+  e = error_of("/api/render", R"({"objects": [{"shape": {"type": "mesh", "file": "../../../../etc/passwd"}}]})");
+  EXPECT_EQ(e["errors"][0]["path"], "objects[0].shape.file");
+  EXPECT_NE(e["errors"][0]["message"].get<std::string>().find("outside the scene's folder"), std::string::npos);
   e = error_of("/api/render?shading=cel", kPhongScene);
   EXPECT_NE(e["error"].get<std::string>().find("shading"), std::string::npos);
   error_of("/api/explain", "[1, 2]");
