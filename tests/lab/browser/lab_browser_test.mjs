@@ -2,45 +2,14 @@
 // the page as a student uses it. Run by ctest (test lab_browser):
 //   node lab_browser_test.mjs --cli PATH_TO_shadelab --source REPO_DIR --out OUTPUT_DIR
 // Exit status 0 when every check passes; a screenshot of the page is saved in OUTPUT_DIR.
-import { spawn } from "node:child_process";
-import { existsSync, mkdirSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
 
-const arg = (name) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : undefined;
-};
-const cli = arg("--cli"), source = arg("--source"), out = arg("--out") || ".";
+import { check, checkSum, finish, imageKeyInPage, options, pixelInPage, startServer } from "./harness.mjs";
+
 const browserPath = process.env.CHROMIUM || "/usr/bin/chromium";
-if (!cli || !source) {
-  console.error("usage: node lab_browser_test.mjs --cli SHADELAB --source REPO_DIR [--out DIR]");
-  process.exit(2);
-}
-if (!existsSync(browserPath)) {
-  console.error(`lab_browser: ${browserPath} not found (scripts/setup.sh installs Debian's chromium)`);
-  process.exit(1);
-}
-mkdirSync(out, { recursive: true });
-
-let failures = 0;
-function check(ok, what) {
-  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
-  if (!ok) failures += 1;
-}
-
-// The server on a free port; its first line names it.
-const server = spawn(cli, ["serve", "--port", "0"], { cwd: source, stdio: ["ignore", "pipe", "inherit"] });
-const url = await new Promise((resolve, reject) => {
-  let text = "";
-  server.stdout.on("data", (d) => {
-    text += d;
-    const m = text.match(/http:\/\/[^\s]+/);
-    if (m) resolve(m[0]);
-  });
-  server.on("exit", (code) => reject(new Error(`shadelab serve exited with ${code}`)));
-  setTimeout(() => reject(new Error("shadelab serve did not start")), 20000);
-});
+const { cli, source, out } = options("lab_browser_test.mjs", browserPath);
+const { url, server } = await startServer(cli, source);
 
 const browser = await chromium.launch({
   executablePath: browserPath,
@@ -54,13 +23,7 @@ try {
   await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
 
   // The bytes of the image shown, to tell one picture from another.
-  const imageKey = () => page.evaluate(async () => {
-    const img = document.querySelector("#images img");
-    const buf = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
-    let h = 0;
-    for (const b of buf) h = (h * 31 + b) >>> 0;
-    return `${buf.length}:${h}`;
-  });
+  const imageKey = () => page.evaluate(imageKeyInPage);
   check((await page.locator("#lights tbody tr:not(.details)").count()) === 9, "the lecture's nine lights are listed");
 
   // 1. A light's colour changes the picture.
@@ -88,19 +51,7 @@ try {
   await img.click({ position: { x: 200, y: 190 } });
   await page.waitForSelector("#explain-result");
   const explained = await page.locator("#explain-result").textContent();
-  const m = explained.match(/\((\d+), (\d+), (\d+)\)\/255/);
-  const shown = await page.evaluate(() => {
-    const img = document.querySelector("#images img");
-    const c = document.createElement("canvas");
-    c.width = img.naturalWidth; c.height = img.naturalHeight;
-    const g = c.getContext("2d");
-    g.drawImage(img, 0, 0);
-    const r = img.getBoundingClientRect();
-    const x = Math.floor(200 / r.width * img.naturalWidth), y = Math.floor(190 / r.height * img.naturalHeight);
-    return Array.from(g.getImageData(x, y, 1, 1).data.slice(0, 3));
-  });
-  const close = m && [1, 2, 3].every((k) => Math.abs(Number(m[k]) - shown[k - 1]) <= 2);
-  check(!!close, `the explanation's sum (${m ? m.slice(1).join(", ") : "none"}) is the pixel's colour (${shown.join(", ")})`);
+  checkSum(explained, await page.evaluate(pixelInPage, { x: 200, y: 190 }));
   check((await page.locator("#explain table tbody tr").count()) >= 9 + 3, "every light has its row in the explanation");
 
   // 4. An invalid value is reported next to its field.
@@ -125,5 +76,4 @@ try {
   await browser.close();
   server.kill();
 }
-console.log(failures ? `${failures} check(s) failed` : "all checks passed");
-process.exit(failures ? 1 : 0);
+finish();

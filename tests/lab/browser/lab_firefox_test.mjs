@@ -2,44 +2,14 @@
 // puppeteer-core): the same checks as the Chromium test, so that the page is known to work in
 // both. Run by ctest (test lab_firefox):
 //   node lab_firefox_test.mjs --cli PATH_TO_shadelab --source REPO_DIR --out OUTPUT_DIR
-import { spawn } from "node:child_process";
-import { existsSync, mkdirSync } from "node:fs";
 import { join } from "node:path";
 import puppeteer from "puppeteer-core";
 
-const arg = (name) => {
-  const i = process.argv.indexOf(name);
-  return i > 0 ? process.argv[i + 1] : undefined;
-};
-const cli = arg("--cli"), source = arg("--source"), out = arg("--out") || ".";
+import { check, checkSum, finish, imageKeyInPage, options, pixelInPage, startServer } from "./harness.mjs";
+
 const firefox = process.env.FIREFOX || "/usr/bin/firefox-esr";
-if (!cli || !source) {
-  console.error("usage: node lab_firefox_test.mjs --cli SHADELAB --source REPO_DIR [--out DIR]");
-  process.exit(2);
-}
-if (!existsSync(firefox)) {
-  console.error(`lab_firefox: ${firefox} not found (scripts/setup.sh installs Debian's firefox-esr)`);
-  process.exit(1);
-}
-mkdirSync(out, { recursive: true });
-
-let failures = 0;
-function check(ok, what) {
-  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
-  if (!ok) failures += 1;
-}
-
-const server = spawn(cli, ["serve", "--port", "0"], { cwd: source, stdio: ["ignore", "pipe", "inherit"] });
-const url = await new Promise((resolve, reject) => {
-  let text = "";
-  server.stdout.on("data", (d) => {
-    text += d;
-    const m = text.match(/http:\/\/[^\s]+/);
-    if (m) resolve(m[0]);
-  });
-  server.on("exit", (code) => reject(new Error(`shadelab serve exited with ${code}`)));
-  setTimeout(() => reject(new Error("shadelab serve did not start")), 20000);
-});
+const { cli, source, out } = options("lab_firefox_test.mjs", firefox);
+const { url, server } = await startServer(cli, source);
 
 const browser = await puppeteer.launch({
   browser: "firefox", executablePath: firefox, headless: true, protocol: "webDriverBiDi",
@@ -56,13 +26,7 @@ try {
   await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
   check((await page.$$eval("#lights tbody tr:not(.details)", (r) => r.length)) === 9, "the lecture's nine lights are listed");
 
-  const imageKey = () => page.evaluate(async () => {
-    const img = document.querySelector("#images img");
-    const buf = new Uint8Array(await (await fetch(img.src)).arrayBuffer());
-    let h = 0;
-    for (const b of buf) h = (h * 31 + b) >>> 0;
-    return `${buf.length}:${h}`;
-  });
+  const imageKey = () => page.evaluate(imageKeyInPage);
   const before = await imageKey();
   await page.evaluate(() => {
     const el = document.querySelector('[data-path="lights[6].diffuse[0]"]');
@@ -90,19 +54,7 @@ try {
   await page.mouse.click(box.x + 200, box.y + 190);
   await page.waitForSelector("#explain-result");
   const explained = await page.$eval("#explain-result", (e) => e.textContent);
-  const m = explained.match(/\((\d+), (\d+), (\d+)\)\/255/);
-  const shown = await page.evaluate(() => {
-    const img = document.querySelector("#images img");
-    const c = document.createElement("canvas");
-    c.width = img.naturalWidth; c.height = img.naturalHeight;
-    const g = c.getContext("2d");
-    g.drawImage(img, 0, 0);
-    const r = img.getBoundingClientRect();
-    const x = Math.floor(200 / r.width * img.naturalWidth), y = Math.floor(190 / r.height * img.naturalHeight);
-    return Array.from(g.getImageData(x, y, 1, 1).data.slice(0, 3));
-  });
-  const close = m && [1, 2, 3].every((k) => Math.abs(Number(m[k]) - shown[k - 1]) <= 2);
-  check(!!close, `the explanation's sum (${m ? m.slice(1).join(", ") : "none"}) is the pixel's colour (${shown.join(", ")})`);
+  checkSum(explained, await page.evaluate(pixelInPage, { x: 200, y: 190 }));
 
   await page.evaluate(() => {
     document.querySelector("#lights tbody tr:not(.details) button").click();  // "more"
@@ -121,5 +73,4 @@ try {
   await browser.close();
   server.kill();
 }
-console.log(failures ? `${failures} check(s) failed` : "all checks passed");
-process.exit(failures ? 1 : 0);
+finish();
