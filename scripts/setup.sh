@@ -15,6 +15,7 @@ PACKAGES=(
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
   gnuplot-nox     # bench/run.sh plots
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)
+  clang libclang-rt-14-dev     # libFuzzer for fuzz/run.sh
 )
 
 install_packages() {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds shadelab (installing missing Debian packages first) and runs every test with ctest,
-# then the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/)
-# and the test program (every render there draws on threads) under ThreadSanitizer
-# (build-tsan/); any sanitizer report fails.
+# then the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
+# the test program (every render there draws on threads) under ThreadSanitizer (build-tsan/),
+# and every fuzz target for a minute (build-fuzz/); any sanitizer report or crash fails.
 #
 #   scripts/test.sh           everything (what CI runs)
 #   scripts/test.sh --quick   the normal build's tests only
@@ -40,3 +40,6 @@ ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
 echo "test: ThreadSanitizer (the unit, rendering and differential tests: all draw on threads)"
 sanitized_build build-tsan "-fsanitize=thread" shadelab_tests
 TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" build-tsan/tests/shadelab_tests
+
+echo "test: fuzzing, a minute per target (fuzz/run.sh; docs/robustness.md)"
+fuzz/run.sh 60

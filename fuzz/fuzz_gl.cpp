@@ -1,0 +1,199 @@
+// Sequences of GL calls: the input bytes are decoded into libshadelab-gl calls on a 32x32
+// OSMesa context, with arbitrary enums (valid and not), values (NaN, infinities, huge,
+// negative), calls between glBegin and glEnd or outside, in any order. Only what OpenGL cannot
+// defend against is kept valid: every pointer handed to the library points into buffers of
+// this program that are large enough for what the call may read or write.
+#include <GL/gl.h>
+#include <GL/osmesa.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <vector>
+
+namespace {
+
+class Input {
+ public:
+  Input(const std::uint8_t* d, std::size_t n) : d_(d), n_(n) {}
+  bool done() const { return i_ >= n_; }
+  std::uint8_t byte() { return i_ < n_ ? d_[i_++] : 0; }
+  int small(int lo, int hi) { return lo + byte() % (hi - lo + 1); }
+  // Interesting floats: small values, edges of ranges, and values no GL call should choke on.
+  float number() {
+    static const float kSpecial[] = {0.0f, 1.0f, -1.0f, 0.5f, 2.0f, 90.0f, 128.0f, 180.0f, 1e-30f, 1e30f,
+                                     -1e30f, std::numeric_limits<float>::infinity(),
+                                     -std::numeric_limits<float>::infinity(),
+                                     std::numeric_limits<float>::quiet_NaN(), 200.0f, -5.0f};
+    std::uint8_t b = byte();
+    if (b < 64) return kSpecial[b % 16];
+    return (float(b) - 160.0f) / 16.0f;
+  }
+  GLenum any_enum() {
+    static const GLenum kEnums[] = {
+        GL_LIGHTING, GL_LIGHT0, GL_LIGHT1, GL_LIGHT7, GL_LIGHT0 + 31, GL_LIGHT0 + 40, GL_NORMALIZE,
+        GL_RESCALE_NORMAL, GL_DEPTH_TEST, GL_BLEND, GL_CULL_FACE, GL_COLOR_MATERIAL, GL_STENCIL_TEST,
+        GL_POLYGON_OFFSET_FILL, GL_TEXTURE_2D, GL_FRONT, GL_BACK, GL_FRONT_AND_BACK, GL_AMBIENT,
+        GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS, GL_AMBIENT_AND_DIFFUSE, GL_POSITION,
+        GL_SPOT_DIRECTION, GL_SPOT_CUTOFF, GL_SPOT_EXPONENT, GL_CONSTANT_ATTENUATION,
+        GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION, GL_LIGHT_MODEL_AMBIENT,
+        GL_LIGHT_MODEL_LOCAL_VIEWER, GL_LIGHT_MODEL_TWO_SIDE, GL_LIGHT_MODEL_COLOR_CONTROL,
+        GL_SEPARATE_SPECULAR_COLOR, GL_FLAT, GL_SMOOTH, GL_MODELVIEW, GL_PROJECTION, GL_TEXTURE,
+        GL_NEVER, GL_LESS, GL_LEQUAL, GL_ALWAYS, GL_ZERO, GL_ONE, GL_SRC_ALPHA,
+        GL_ONE_MINUS_SRC_ALPHA, GL_DST_COLOR, GL_SRC_ALPHA_SATURATE, GL_KEEP, GL_REPLACE, GL_INCR,
+        GL_DECR, GL_INVERT, GL_CW, GL_CCW, GL_RGBA, GL_RGB, GL_LUMINANCE, GL_ALPHA, GL_UNSIGNED_BYTE,
+        GL_FLOAT, GL_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_INT, GL_DOUBLE,
+        GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_NEAREST,
+        GL_LINEAR, GL_LINEAR_MIPMAP_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, GL_CLAMP,
+        GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE, GL_DECAL, GL_TEXTURE_ENV_COLOR,
+        GL_TRIANGLES, GL_TRIANGLE_STRIP, GL_TRIANGLE_FAN, GL_QUADS, GL_QUAD_STRIP, GL_POLYGON,
+        GL_POINTS, GL_LINES, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY,
+        GL_MAX_LIGHTS, GL_MODELVIEW_MATRIX, GL_VIEWPORT, GL_DEPTH_RANGE, GL_COLOR_CLEAR_VALUE,
+        GL_CURRENT_COLOR, GL_MATRIX_MODE, GL_MAX_MODELVIEW_STACK_DEPTH, GL_UNPACK_ALIGNMENT,
+        GL_PACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_PACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
+        GL_PACK_SKIP_PIXELS, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VENDOR, GL_EXTENSIONS,
+        0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
+    return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
+  }
+
+ private:
+  const std::uint8_t* d_;
+  std::size_t n_, i_ = 0;
+};
+
+constexpr int kSize = 32;           // the context's buffer
+constexpr int kElements = 64;       // vertex array elements the arrays hold
+constexpr int kMaxStride = 64;      // bytes
+constexpr std::size_t kArrayBytes = kElements * kMaxStride + 64;
+constexpr int kMaxImage = 16;       // texture and glReadPixels extents and pixel-store values
+
+struct Buffers {
+  std::vector<unsigned char> color = std::vector<unsigned char>(kSize * kSize * 4);
+  alignas(16) unsigned char arrays[4][kArrayBytes];
+  std::uint32_t indices[256];
+  // Pixel data: (skip + extent) rows of up to max(row length, extent) pixels of up to 16 bytes
+  // (4 float components), with alignment padding; far more than any allowed call can touch.
+  alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 64];
+  double out[32];
+};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size > 4096) return 0;
+  static Buffers* b = new Buffers;
+  Input in(data, size);
+  // Array contents and indices from one seed byte: the rest of the input is calls.
+  std::uint8_t seed = in.byte();
+  for (std::size_t i = 0; i < sizeof b->arrays; ++i) (&b->arrays[0][0])[i] = std::uint8_t(i * 37 + seed);
+  for (std::size_t i = 0; i < 256; ++i) b->indices[i] = std::uint32_t(i * 7 + seed) % kElements;
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+  if (!ctx) return 0;
+  if (!OSMesaMakeCurrent(ctx, b->color.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
+    OSMesaDestroyContext(ctx);
+    return 0;
+  }
+  GLfloat f[4];
+  int calls = 0;
+  while (!in.done() && ++calls < 400) {
+    switch (in.byte() % 40) {
+      case 0: glEnable(in.any_enum()); break;
+      case 1: glDisable(in.any_enum()); break;
+      case 2: glBegin(in.any_enum()); break;
+      case 3: glEnd(); break;
+      case 4: glVertex3f(in.number(), in.number(), in.number()); break;
+      case 5: glVertex4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 6: glNormal3f(in.number(), in.number(), in.number()); break;
+      case 7: glColor4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 8: glTexCoord2f(in.number(), in.number()); break;
+      case 9:
+        for (float& v : f) v = in.number();
+        glLightfv(in.any_enum(), in.any_enum(), f);
+        break;
+      case 10: glLightf(in.any_enum(), in.any_enum(), in.number()); break;
+      case 11:
+        for (float& v : f) v = in.number();
+        glMaterialfv(in.any_enum(), in.any_enum(), f);
+        break;
+      case 12:
+        for (float& v : f) v = in.number();
+        glLightModelfv(in.any_enum(), f);
+        break;
+      case 13: glMatrixMode(in.any_enum()); break;
+      case 14: glPushMatrix(); break;
+      case 15: glPopMatrix(); break;
+      case 16: glLoadIdentity(); break;
+      case 17: glRotatef(in.number(), in.number(), in.number(), in.number()); break;
+      case 18: glTranslatef(in.number(), in.number(), in.number()); break;
+      case 19: glScalef(in.number(), in.number(), in.number()); break;
+      case 20: glFrustum(in.number(), in.number(), in.number(), in.number(), in.number(), in.number()); break;
+      case 21: glOrtho(in.number(), in.number(), in.number(), in.number(), in.number(), in.number()); break;
+      case 22: glViewport(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;
+      case 23: glClear(GLbitfield(in.byte()) << 8 | in.byte()); break;
+      case 24: glBlendFunc(in.any_enum(), in.any_enum()); break;
+      case 25: glDepthFunc(in.any_enum()); break;
+      case 26: glStencilFunc(in.any_enum(), in.small(-2, 300), GLuint(in.byte())); break;
+      case 27: glStencilOp(in.any_enum(), in.any_enum(), in.any_enum()); break;
+      case 28: glShadeModel(in.any_enum()); break;
+      case 29: glPolygonOffset(in.number(), in.number()); break;
+      case 30: {  // arrays: pointers into our buffers, strides that stay inside them
+        int which = in.byte() % 4, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
+        GLenum type = in.any_enum();
+        void* p = b->arrays[which];
+        if (which == 0) glVertexPointer(sz, type, stride, p);
+        else if (which == 1) glNormalPointer(type, stride, p);
+        else if (which == 2) glColorPointer(sz, type, stride, p);
+        else glTexCoordPointer(sz, type, stride, p);
+        break;
+      }
+      case 31: glEnableClientState(in.any_enum()); break;
+      case 32: glDrawArrays(in.any_enum(), in.small(0, kElements / 2), in.small(-1, kElements / 2)); break;
+      case 33: glDrawElements(in.any_enum(), in.small(-1, 256), GL_UNSIGNED_INT, b->indices); break;
+      case 34: {  // textures with small images from our pixel buffer
+        GLuint name = 0;
+        glGenTextures(1, &name);
+        glBindTexture(GL_TEXTURE_2D, in.byte() % 2 ? name : in.byte());
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        glTexImage2D(in.any_enum(), in.small(-1, 4), GLint(in.any_enum()), in.small(-1, kMaxImage),
+                     in.small(-1, kMaxImage), in.small(0, 1), in.any_enum(), in.any_enum(), b->pixels);
+        glTexParameteri(GL_TEXTURE_2D, in.any_enum(), GLint(in.any_enum()));
+        glTexEnvi(in.any_enum(), in.any_enum(), GLint(in.any_enum()));
+        if (in.byte() % 4 == 0) glDeleteTextures(1, &name);
+        break;
+      }
+      case 35:
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        glReadPixels(in.small(-4, kSize), in.small(-4, kSize), in.small(-1, kMaxImage), in.small(-1, kMaxImage),
+                     in.any_enum(), in.any_enum(), b->pixels);
+        break;
+      case 36: {
+        GLenum what = in.any_enum();
+        glGetFloatv(what, reinterpret_cast<GLfloat*>(b->out));
+        glGetIntegerv(what, reinterpret_cast<GLint*>(b->out));
+        glGetDoublev(what, b->out);
+        GLboolean flags[32];
+        glGetBooleanv(what, flags);
+        (void)glIsEnabled(what);
+        (void)glGetString(what);
+        glGetLightfv(in.any_enum(), in.any_enum(), reinterpret_cast<GLfloat*>(b->out));
+        glGetMaterialfv(in.any_enum(), in.any_enum(), reinterpret_cast<GLfloat*>(b->out));
+        break;
+      }
+      case 37: (void)glGetError(); break;
+      case 38: glColorMaterial(in.any_enum(), in.any_enum()); break;
+      case 39: {
+        glFinish();
+        GLint w, h, bytes;
+        void* depth = nullptr;
+        (void)OSMesaGetDepthBuffer(ctx, &w, &h, &bytes, &depth);
+        break;
+      }
+    }
+  }
+  glEnd();
+  glFinish();
+  OSMesaMakeCurrent(nullptr, nullptr, 0, 0, 0);
+  OSMesaDestroyContext(ctx);
+  return 0;
+}
