@@ -1,16 +1,33 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, AddressSanitizer + UndefinedBehaviorSanitizer) into
-# build-fuzz/ and runs each for SECONDS (default 60) from its checked-in seeds, on a copy of
-# the corpus so that the seeds stay small. Fails on any crash, hang, leak or sanitizer report;
+# build-fuzz/ and runs them. Fails on any crash, hang, leak, out-of-memory or sanitizer report;
 # the reproducer is left in build-fuzz/crashes/. docs/robustness.md says more.
 #
-#   fuzz/run.sh [SECONDS] [TARGET...]      e.g. fuzz/run.sh 600 fuzz_gl
+#   fuzz/run.sh [SECONDS] [TARGET...]   explore: each target for SECONDS (default 60) from its
+#                                       seeds, with a random seed: finds new inputs
+#   fuzz/run.sh --ci [TARGET...]        what CI runs: every past finding (fuzz/regressions/)
+#                                       once, then a fixed number of executions per target
+#                                       from a fixed seed, so that a run is repeatable
+#
+# e.g. fuzz/run.sh 600 fuzz_gl; a finding is replayed with build-fuzz/fuzz/TARGET FILE.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:-60}"
-shift || true
+ci=0
+seconds=60
+if [ "${1:-}" = "--ci" ]; then
+  ci=1
+  shift
+elif [ $# -gt 0 ] && [[ "$1" =~ ^[0-9]+$ ]]; then
+  seconds="$1"
+  shift
+fi
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(fuzz_scene fuzz_obj fuzz_png fuzz_overrides fuzz_gl)
+all=(fuzz_scene fuzz_obj fuzz_png fuzz_overrides fuzz_vary fuzz_gl fuzz_lab)
+[ ${#targets[@]} -gt 0 ] || targets=("${all[@]}")
+
+# Executions per target in --ci mode: about 40 s each on a 2-core machine of the CI's kind.
+declare -A ci_runs=([fuzz_scene]=400000 [fuzz_obj]=100000 [fuzz_png]=100000 [fuzz_overrides]=150000
+                    [fuzz_vary]=80000 [fuzz_gl]=150000 [fuzz_lab]=50000)
 
 flags="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=undefined"
 cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
@@ -19,21 +36,41 @@ cmake -S . -B build-fuzz -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" >/dev/null
 cmake --build build-fuzz --target "${targets[@]}"
 
+export ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1"
+common=(-timeout=10 -rss_limit_mb=2048 -print_final_stats=1)
 mkdir -p build-fuzz/crashes
 status=0
 for t in "${targets[@]}"; do
-  seeds="fuzz/corpus/${t#fuzz_}"
-  work="build-fuzz/corpus/${t#fuzz_}"
+  name="${t#fuzz_}"
+  log="build-fuzz/$t.log"
+  # Past findings first: each must now run clean.
+  if [ -d "fuzz/regressions/$name" ]; then
+    if ! "build-fuzz/fuzz/$t" "${common[@]}" fuzz/regressions/"$name"/* >"$log" 2>&1; then
+      echo "fuzz: $t FAILED on a past finding (fuzz/regressions/$name); see $log"
+      tail -n 40 "$log"
+      status=1
+      continue
+    fi
+    echo "fuzz: $t: $(ls "fuzz/regressions/$name" | wc -l) past findings run clean"
+  fi
+  work="build-fuzz/corpus/$name"
+  # Exploring keeps what earlier runs found; --ci starts from the checked-in seeds alone.
+  [ $ci = 0 ] || rm -rf "$work"
   mkdir -p "$work"
-  cp -n "$seeds"/* "$work"/ 2>/dev/null || true
-  echo "fuzz: $t for ${seconds}s"
-  if ! ASAN_OPTIONS="detect_leaks=1:allocator_may_return_null=1" \
-       "build-fuzz/fuzz/$t" "$work" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-       -artifact_prefix="build-fuzz/crashes/$t-" -print_final_stats=1 2>"build-fuzz/$t.log"; then
-    echo "fuzz: $t FAILED; see build-fuzz/$t.log and build-fuzz/crashes/"
-    tail -n 40 "build-fuzz/$t.log"
+  cp -n "fuzz/corpus/$name"/* "$work"/ 2>/dev/null || true
+  if [ $ci = 1 ]; then
+    budget=(-seed=1 -runs="${ci_runs[$t]:-100000}" -max_total_time=300)
+    echo "fuzz: $t for ${ci_runs[$t]:-100000} executions (seed 1)"
+  else
+    budget=(-max_total_time="$seconds")
+    echo "fuzz: $t for ${seconds}s"
+  fi
+  if ! "build-fuzz/fuzz/$t" "$work" "${budget[@]}" "${common[@]}" \
+       -artifact_prefix="build-fuzz/crashes/$t-" 2>"$log"; then
+    echo "fuzz: $t FAILED; see $log and build-fuzz/crashes/"
+    tail -n 40 "$log"
     status=1
   fi
-  grep -E '^stat::number_of_executed_units|^#[0-9]+.*DONE' "build-fuzz/$t.log" | tail -n 2 || true
+  grep -E '^stat::number_of_executed_units|^#[0-9]+.*DONE' "$log" | tail -n 2 || true
 done
 exit $status

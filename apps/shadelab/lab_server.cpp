@@ -27,6 +27,10 @@ namespace {
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 
+// JSON text; a string that is not valid UTF-8 (a request's bytes quoted in a message, a file
+// name) has its bad bytes replaced rather than failing the answer.
+std::string text_of(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
 json diagnostics_json(const Diagnostics& d) {
   json errors = json::array();
   for (const Diagnostic& e : d.items()) {
@@ -43,7 +47,7 @@ void send_error(httplib::Response& res, int status, const std::string& message,
                 json errors = json::array()) {
   if (errors.empty()) errors.push_back({{"path", ""}, {"message", message}, {"text", message}});
   res.status = status;
-  res.set_content(json{{"error", message}, {"errors", errors}}.dump(), "application/json");
+  res.set_content(text_of(json{{"error", message}, {"errors", errors}}), "application/json");
 }
 
 json color_json(const glm::vec3& c) { return {c.r, c.g, c.b}; }
@@ -85,6 +89,7 @@ class Lab {
     std::vector<std::string> overrides;
     RenderOptions ro;
     ro.threads = 1;  // one thread per request: the server's pool serves clients side by side
+    ro.max_fragment_memory = options_.max_fragment_mib << 20;
     if (req.has_param("shading")) {
       std::string s = req.get_param_value("shading");
       if (s == "flat") ro.shading = ShadingMode::kFlat;
@@ -104,6 +109,11 @@ class Lab {
       return send_error(res, 503, "the render took longer than the lab's limit of " +
                                       std::to_string(options_.max_render_seconds) + " s");
     }
+    if (stats.fragments_dropped > 0) {
+      return send_error(res, 503, "exact transparency needs more than the lab's limit of " +
+                                      std::to_string(options_.max_fragment_mib) +
+                                      " MiB for its fragment lists");
+    }
     std::vector<std::uint8_t> png = encode_png(img);
     res.set_header("X-Render-Ms", std::to_string(ms));
     res.set_header("Cache-Control", "no-store");
@@ -117,7 +127,7 @@ class Lab {
     if (!body.contains("x") || !body["x"].is_number_integer() || !body.contains("y") || !body["y"].is_number_integer()) {
       return send_error(res, 400, "x, y: expected the pixel's integer coordinates");
     }
-    std::optional<Scene> scene = scene_from(body["scene"].dump(), res);
+    std::optional<Scene> scene = scene_from(text_of(body["scene"]), res);
     if (!scene) return;
     long long x = body["x"].get<long long>(), y = body["y"].get<long long>();
     if (x < 0 || y < 0 || x >= scene->width || y >= scene->height) {
@@ -125,7 +135,7 @@ class Lab {
     }
     std::optional<PixelExplanation> e = explain_pixel(*scene, int(x), int(y));
     if (!e) {
-      res.set_content(json{{"hit", false}, {"background", color_json(scene->background)}}.dump(),
+      res.set_content(text_of(json{{"hit", false}, {"background", color_json(scene->background)}}),
                       "application/json");
       return;
     }
@@ -143,7 +153,7 @@ class Lab {
     const char* shading = e->shading == ShadingMode::kFlat      ? "flat"
                           : e->shading == ShadingMode::kGouraud ? "gouraud"
                                                                 : "phong";
-    res.set_content(json{{"hit", true},
+    res.set_content(text_of(json{{"hit", true},
                          {"object", e->object},
                          {"shading", shading},
                          {"lit", e->lit},
@@ -155,8 +165,7 @@ class Lab {
                          {"lights", lights},
                          {"unclamped", color_json(b.unclamped)},
                          {"result", color_json(b.result.primary)},
-                         {"secondary", color_json(b.result.secondary)}}
-                        .dump(),
+                         {"secondary", color_json(b.result.secondary)}}),
                     "application/json");
   }
 
@@ -165,7 +174,7 @@ class Lab {
     for (const MaterialPreset& p : material_presets()) {
       list.push_back({{"name", p.name}, {"description", p.description}, {"material", material_json(p.material)}});
     }
-    res.set_content(list.dump(), "application/json");
+    res.set_content(text_of(list), "application/json");
   }
 
   // The built-in shapes the page offers, and the OBJ files beside the served scene.
@@ -178,9 +187,8 @@ class Lab {
       }
     }
     std::sort(objs.begin(), objs.end());
-    res.set_content(json{{"shapes", {"teapot", "sphere", "torus", "cylinder", "cone", "cube", "wall"}},
-                         {"obj_files", objs}}
-                        .dump(),
+    res.set_content(text_of(json{{"shapes", {"teapot", "sphere", "torus", "cylinder", "cone", "cube", "wall"}},
+                                 {"obj_files", objs}}),
                     "application/json");
   }
 
@@ -193,9 +201,9 @@ class Lab {
 
 }  // namespace
 
-int run_lab_server(const LabOptions& options) {
-  Lab lab(options);
-  httplib::Server server;
+std::shared_ptr<const void> install_lab(httplib::Server& server, const LabOptions& options) {
+  auto lab = std::make_shared<const Lab>(options);
+  const Lab* l = lab.get();
   server.new_task_queue = [] { return new httplib::ThreadPool(8); };
   server.set_payload_max_length(options.max_body);
   server.set_read_timeout(10, 0);
@@ -206,11 +214,11 @@ int run_lab_server(const LabOptions& options) {
       res.set_content(std::string(a.data), a.mime);
     });
   }
-  server.Post("/api/render", [&](const httplib::Request& q, httplib::Response& r) { lab.render(q, r); });
-  server.Post("/api/explain", [&](const httplib::Request& q, httplib::Response& r) { lab.explain(q, r); });
-  server.Get("/api/presets", [&](const httplib::Request&, httplib::Response& r) { lab.presets(r); });
-  server.Get("/api/shapes", [&](const httplib::Request&, httplib::Response& r) { lab.shapes(r); });
-  server.Get("/api/scene", [&](const httplib::Request&, httplib::Response& r) { lab.scene(r); });
+  server.Post("/api/render", [l](const httplib::Request& q, httplib::Response& r) { l->render(q, r); });
+  server.Post("/api/explain", [l](const httplib::Request& q, httplib::Response& r) { l->explain(q, r); });
+  server.Get("/api/presets", [l](const httplib::Request&, httplib::Response& r) { l->presets(r); });
+  server.Get("/api/shapes", [l](const httplib::Request&, httplib::Response& r) { l->shapes(r); });
+  server.Get("/api/scene", [l](const httplib::Request&, httplib::Response& r) { l->scene(r); });
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
     send_error(res, 500, "internal error");
   });
@@ -219,6 +227,12 @@ int run_lab_server(const LabOptions& options) {
       send_error(res, res.status, res.status == 413 ? "the request is too large" : "not found");
     }
   });
+  return lab;
+}
+
+int run_lab_server(const LabOptions& options) {
+  httplib::Server server;
+  std::shared_ptr<const void> lab = install_lab(server, options);
   int port = options.port;
   if (port == 0) {
     port = server.bind_to_any_port(options.host);

@@ -4,7 +4,12 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
+
+namespace httplib {
+class Server;
+}
 
 namespace shadelab::cli {
 
@@ -19,7 +24,13 @@ struct LabOptions {
   long long max_triangles = 2'000'000;
   int max_lights = 64;
   double max_render_seconds = 10.0;  ///< objects not started by then are left out: answered 503
+  std::size_t max_fragment_mib = 256;  ///< exact transparency's fragment lists; over it: 503
 };
+
+/// Sets up `server` as the lab: its routes, worker threads and request limits. The returned
+/// handle holds the lab's state and must outlive the server's serving. For run_lab_server and
+/// for tests and fuzzers that serve the lab in-process.
+std::shared_ptr<const void> install_lab(httplib::Server& server, const LabOptions& options);
 
 /// Serves until the process is stopped; prints the address once listening (to stdout, so
 /// that scripts can read the port chosen for port 0). Returns the exit status.

@@ -24,6 +24,7 @@ struct RenderArgs {
   bool reference = false;
   int threads = 0;
   LoadOptions limits;  // only the max_* fields
+  std::size_t max_fragment_mib = 1024;
 };
 
 bool same_file(const std::string& a, const std::string& b) {
@@ -59,6 +60,7 @@ int run_render(const RenderArgs& args) {
   if (args.shading == "phong") render_options.shading = ShadingMode::kPhong;
   render_options.reference = args.reference;
   render_options.threads = args.threads;
+  render_options.max_fragment_memory = args.max_fragment_mib << 20;
 
   std::string output = args.output;
   if (output.empty()) output = std::filesystem::path(args.scene).stem().string() + ".png";
@@ -77,6 +79,11 @@ int run_render(const RenderArgs& args) {
   if (!write_png(image, output, &error)) {
     std::cerr << "shadelab render: " << error << "\n";
     return kExitFailure;
+  }
+  if (stats.fragments_dropped > 0) {
+    std::cerr << "shadelab render: warning: exact transparency: " << stats.fragments_dropped
+              << " fragments were not blended; their lists need more than the limit of "
+              << args.max_fragment_mib << " MiB (--max-fragment-memory)\n";
   }
   if (args.stats) print_stats(stats, *loaded.scene);
   return kExitOk;
@@ -107,6 +114,12 @@ Action add_render_command(CLI::App& app) {
       ->check(CLI::Range(1LL, 1LL << 31));
   cmd->add_option("--max-lights", args->limits.max_lights, "Limit on lights (default 1024)")
       ->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--max-texture-size", args->limits.max_texture_side,
+                  "Limit on a texture image's width and height (default 8192)")
+      ->check(CLI::Range(1, 1 << 16));
+  cmd->add_option("--max-fragment-memory", args->max_fragment_mib,
+                  "Memory for exact transparency's per-pixel fragment lists, MiB (default 1024)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 20));
   cmd->add_option("--threads", args->threads,
                   "Fast pipeline threads (default: $SHADELAB_THREADS, else all cores)")
       ->check(CLI::Range(1, 256));

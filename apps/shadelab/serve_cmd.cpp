@@ -66,6 +66,9 @@ Action add_serve_command(CLI::App& app) {
   cmd->add_option("--max-render-seconds", args->limits.max_render_seconds,
                   "Limit per render: objects not started by then are left out and the request fails (default 10)")
       ->check(CLI::Range(0.001, 3600.0));
+  cmd->add_option("--max-fragment-memory", args->limits.max_fragment_mib,
+                  "Limit per render: exact transparency's fragment lists, MiB (default 256)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 16));
   cmd->add_option("--max-body", args->limits.max_body, "Limit on a request's size in bytes (default 1048576)")
       ->check(CLI::Range(std::size_t(1024), std::size_t(1) << 30));
   cmd->footer("Example:\n  shadelab serve            then open http://127.0.0.1:8080/");

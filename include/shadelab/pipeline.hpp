@@ -68,7 +68,7 @@ struct FragmentCapture {
   std::vector<std::vector<Entry>> pixels;  ///< one list per pixel, sized by the caller
   std::size_t count = 0;
   std::size_t limit = 64u << 20;  ///< entries kept at most (memory bound)
-  std::size_t dropped = 0;        ///< entries over the limit (the farthest are not kept)
+  std::size_t dropped = 0;        ///< entries arriving once `limit` were kept (not kept)
 };
 
 /// Sorts every pixel's captured fragments far to near and blends them over the framebuffer with
@@ -156,6 +156,9 @@ struct RenderStats {
   std::uint64_t pixels_shaded = 0;    ///< fragments that passed depth and were written
   double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
   bool interrupted = false;  ///< render_scene stopped at RenderOptions::deadline
+  /// Exact transparency: fragments not blended because RenderOptions::max_fragment_memory was
+  /// spent.
+  std::uint64_t fragments_dropped = 0;
 };
 
 /// The fast pipeline's worker threads and reusable buffers (src/fast/, docs/performance.md).

@@ -22,6 +22,10 @@ struct RenderOptions {
   /// When set, objects not yet drawn by then are left out and RenderStats::interrupted is set
   /// (the lab's render time limit); an object already being drawn is finished.
   std::optional<std::chrono::steady_clock::time_point> deadline = std::nullopt;
+  /// Memory for the per-pixel fragment lists of exact transparency (Scene::Transparency::kExact),
+  /// in bytes. Fragments arriving once it is spent are not blended; RenderStats::
+  /// fragments_dropped counts them.
+  std::size_t max_fragment_memory = std::size_t(1) << 30;
 };
 
 /// Renders `scene` at scene.width x scene.height.

@@ -21,6 +21,8 @@ struct LoadOptions {
   long long max_pixels = 16384LL * 16384LL;
   long long max_triangles = 20'000'000;
   int max_lights = 1024;
+  /// Longest side of a texture image, checked from its header before it is decoded.
+  int max_texture_side = 8192;
   /// Mesh and texture files must lie inside the scene's folder (after symbolic links are
   /// followed): for scenes from untrusted sources, such as the lab's requests.
   bool confine_files = false;

@@ -81,8 +81,32 @@ bool write_png(const Image& image, const std::string& path, std::string* error) 
   return true;
 }
 
-bool read_image(const std::string& path, Image& out, std::string* error) {
+bool read_image(const std::string& path, Image& out, std::string* error, int max_side) {
+  // Only PNG and JPEG: stb_image would also take headerless formats (TGA) from any bytes.
+  unsigned char magic[8] = {};
+  {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) {
+      if (error) *error = "cannot read image " + path + ": " + std::strerror(errno);
+      return false;
+    }
+    f.read(reinterpret_cast<char*>(magic), sizeof magic);
+  }
+  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  bool png = std::memcmp(magic, kPng, 8) == 0;
+  bool jpeg = magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff;
+  if (!png && !jpeg) {
+    if (error) *error = "cannot read image " + path + ": not a PNG or JPEG file";
+    return false;
+  }
   int w = 0, h = 0, channels = 0;
+  if (stbi_info(path.c_str(), &w, &h, &channels) && (w > max_side || h > max_side)) {
+    if (error) {
+      *error = "the image " + path + " is " + std::to_string(w) + " x " + std::to_string(h) +
+               ", more than the limit of " + std::to_string(max_side) + " x " + std::to_string(max_side);
+    }
+    return false;
+  }
   stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
   if (!data) {
     if (error) *error = "cannot read image " + path + ": " + stbi_failure_reason();

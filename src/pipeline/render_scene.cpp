@@ -232,7 +232,16 @@ Image render_scene(const Scene& scene, const RenderOptions& requested, RenderSta
     if (obj->blend.enabled && !shadows_drawn) {
       for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
       shadows_drawn = true;
-      if (exact) capture.pixels.resize(std::size_t(fb.width) * std::size_t(fb.height));
+      if (exact) {
+        std::size_t pixels = std::size_t(fb.width) * std::size_t(fb.height);
+        // The lists themselves, then entries; a list's growth by doubling can hold up to twice
+        // its entries, so each entry is counted twice and the total stays within the budget.
+        std::size_t lists = pixels * sizeof(capture.pixels[0]);
+        capture.limit = options.max_fragment_memory > lists
+                            ? (options.max_fragment_memory - lists) / (2 * sizeof(FragmentCapture::Entry))
+                            : 0;
+        capture.pixels.resize(pixels);
+      }
     }
     ObjectPass pass{obj->model, object_state(*obj), std::nullopt};
     if (std::uint8_t mark = receiver_mark(scene, *obj)) {
@@ -248,7 +257,10 @@ Image render_scene(const Scene& scene, const RenderOptions& requested, RenderSta
   if (!shadows_drawn) {
     for (std::size_t i = 0; i < scene.shadows.size(); ++i) draw_shadow(fb, scene, i, view, projection, lights, options, stats);
   }
-  if (exact) resolve_fragments(fb, capture);
+  if (exact) {
+    if (stats) stats->fragments_dropped += capture.dropped;
+    resolve_fragments(fb, capture);
+  }
   Image image = fb.to_image();
   if (n > 1) {
     auto t = std::chrono::steady_clock::now();

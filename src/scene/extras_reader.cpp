@@ -14,7 +14,6 @@ using Type = JsonValue::Type;
 
 namespace {
 
-constexpr int kMaxTextureSide = 8192;
 constexpr std::size_t kMaxShadows = 255;  // one stencil value each
 
 // Image rows run top down; texture row 0 is t = 0, the bottom of the picture.
@@ -76,15 +75,16 @@ std::shared_ptr<const Texture> SceneReader::load_texture(const JsonValue& file, 
                     std::to_string(int(settings.min_filter)) + "|" + std::to_string(int(settings.mag_filter));
   if (auto it = textures_.find(key); it != textures_.end()) return it->second;
   int w = 0, h = 0, channels = 0;
-  if (stbi_info(full.c_str(), &w, &h, &channels) && (w > kMaxTextureSide || h > kMaxTextureSide)) {
+  const int limit = options_.max_texture_side;
+  if (stbi_info(full.c_str(), &w, &h, &channels) && (w > limit || h > limit)) {
     r_.error(file, path, "the texture is " + std::to_string(w) + " x " + std::to_string(h) +
-                             ", more than the limit of " + std::to_string(kMaxTextureSide) + " x " +
-                             std::to_string(kMaxTextureSide));
+                             ", more than the limit of " + std::to_string(limit) + " x " +
+                             std::to_string(limit) + " (--max-texture-size)");
     return nullptr;
   }
   Image img;
   std::string error;
-  if (!read_image(full, img, &error)) {
+  if (!read_image(full, img, &error, limit)) {
     r_.error(file, path, error);
     return nullptr;
   }

@@ -89,6 +89,38 @@ TEST(Cli, LimitsCanBeLoweredAndAreReportedWithTheirValue) {
   EXPECT_EQ(r.exit_status, 0) << r.err;
 }
 
+// Texture size is checked from the file's header before decoding; the limit is the user's.
+TEST(Cli, TextureSizeLimitIsChecked) {
+  std::string out = fresh_output("cli_texture_limit.png");
+  auto r = run_cli("render scenes/lecture/14-emission-night.json --size 32x24 --max-texture-size 32 -o '" +
+                   out + "'");
+  EXPECT_EQ(r.exit_status, 2);
+  EXPECT_NE(r.err.find("objects[0].texture.file: the texture is 64 x 64, more than the limit of 32 x 32 "
+                       "(--max-texture-size)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  r = run_cli("render scenes/lecture/14-emission-night.json --size 32x24 --max-texture-size 64 -o '" + out + "'");
+  EXPECT_EQ(r.exit_status, 0) << r.err;
+}
+
+// Exact transparency's fragment lists have a memory limit; over it the picture is still
+// written and the warning says what was left out and which option raises the limit.
+TEST(Cli, FragmentMemoryLimitWarns) {
+  std::string out = fresh_output("cli_fragment_limit.png");
+  auto r = run_cli("render scenes/shadows-and-glass.json --size 64x48 --max-fragment-memory 1 -o '" + out + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_EQ(r.err, "");  // 64 x 48 pixels' lists fit in a MiB
+  r = run_cli("render scenes/shadows-and-glass.json --size 1024x1024 --max-fragment-memory 1 -o '" + out + "'");
+  ASSERT_EQ(r.exit_status, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: exact transparency: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("fragments were not blended; their lists need more than the limit of 1 MiB "
+                       "(--max-fragment-memory)"),
+            std::string::npos)
+      << r.err;
+}
+
 TEST(Cli, OverrideChangesTheImage) {
   std::string a = fresh_output("cli_set_a.png"), b = fresh_output("cli_set_b.png");
   ASSERT_EQ(run_cli("render scenes/teapot.json --size 48x36 -o '" + a + "'").exit_status, 0);

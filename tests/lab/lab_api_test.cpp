@@ -210,6 +210,9 @@ TEST(LabApi, BadInputGets400WithTheCommandLinesDiagnostics) {
   EXPECT_NE(e["errors"][0]["message"].get<std::string>().find("outside the scene's folder"), std::string::npos);
   e = error_of("/api/render?shading=cel", kPhongScene);
   EXPECT_NE(e["error"].get<std::string>().find("shading"), std::string::npos);
+  // Bytes that are not UTF-8, quoted back in the message (found by fuzz_lab: it was a 500).
+  e = error_of("/api/render?shading=%A0lieht", kPhongScene);
+  EXPECT_NE(e["error"].get<std::string>().find("lieht"), std::string::npos);
   error_of("/api/explain", "[1, 2]");
   error_of("/api/explain", json{{"scene", json::parse(kPhongScene)}, {"x", 1}}.dump());
   error_of("/api/explain", json{{"scene", json::parse(kPhongScene)}, {"x", 500}, {"y", 1}}.dump());
@@ -237,6 +240,26 @@ TEST(LabApi, ARenderOverTheTimeLimitIsAnswered503) {
   ASSERT_TRUE(r);
   EXPECT_EQ(r->status, 503);
   EXPECT_NE(r->body.find("limit"), std::string::npos) << r->body;
+}
+
+// Exact transparency's fragment lists have a memory limit per render: over it, 503.
+TEST(LabApi, ExactTransparencyOverTheFragmentMemoryLimitIsAnswered503) {
+  LabServer strict({"--max-fragment-memory", "1"});
+  ASSERT_GT(strict.port(), 0);
+  json scene = json::parse(kPhongScene);
+  scene["transparency"] = "exact";
+  scene["objects"][0]["blend"] = "alpha";
+  scene["objects"][0]["material"]["diffuse"] = {0.7, 0.6, 0.5, 0.5};
+  auto c = strict.client();
+  auto r = c.Post("/api/render", scene.dump(), "application/json");  // 120 x 90: fits in 1 MiB
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 200);
+  scene["image"] = {{"width", 1000}, {"height", 1000}};  // the lists alone need 24 MB
+  r = c.Post("/api/render", scene.dump(), "application/json");
+  ASSERT_TRUE(r);
+  EXPECT_EQ(r->status, 503);
+  EXPECT_NE(r->body.find("exact transparency needs more than the lab's limit of 1 MiB"), std::string::npos)
+      << r->body;
 }
 
 // Many clients at once all get their pictures, and a small render is not stuck behind a big

@@ -9,7 +9,8 @@
 namespace shadelab {
 namespace {
 
-Image intersecting_quads(const std::string& mode) {
+Image intersecting_quads(const std::string& mode, const RenderOptions& options = {},
+                         RenderStats* stats = nullptr) {
   // Red quad tilted (z = 0.5 x: nearer the viewer for x > 0), green quad flat at z = 0, both
   // unlit with alpha .5, over black; orthographic view down -z.
   LoadResult r = parse_scene(R"({
@@ -23,7 +24,7 @@ Image intersecting_quads(const std::string& mode) {
        "color": [0, 1, 0, 0.5]}
     ]})", "quads.json", ".");
   EXPECT_TRUE(r.scene) << r.diagnostics.to_string();
-  return r.scene ? render_scene(*r.scene) : Image{};
+  return r.scene ? render_scene(*r.scene, options, stats) : Image{};
 }
 
 TEST(Transparency, ExactBlendsBothSidesInDepthOrder) {
@@ -48,6 +49,35 @@ TEST(Transparency, SortedShowsTheClassicErrorOnOneSide) {
   EXPECT_EQ(img.pixel(5, 10)[1], 128);
   EXPECT_EQ(img.pixel(34, 10)[0], 128);
   EXPECT_EQ(img.pixel(34, 10)[1], 0);
+}
+
+// The fragment lists have a memory budget (RenderOptions::max_fragment_memory): within it
+// nothing is dropped; under it, fragments past the budget are counted, on both pipelines,
+// and the picture is still made.
+TEST(Transparency, FragmentMemoryBudgetIsKeptAndReported) {
+  for (bool reference : {false, true}) {
+    RenderOptions options;
+    options.reference = reference;
+    RenderStats roomy;
+    intersecting_quads("exact", options, &roomy);
+    EXPECT_EQ(roomy.fragments_dropped, 0u);
+    // 800 pixels' lists, and room for about half of the 1600 fragments (each counted twice
+    // for the lists' growth).
+    options.max_fragment_memory = 800 * sizeof(std::vector<FragmentCapture::Entry>) +
+                                  800 * 2 * sizeof(FragmentCapture::Entry);
+    RenderStats tight;
+    Image img = intersecting_quads("exact", options, &tight);
+    EXPECT_GT(tight.fragments_dropped, 700u) << "reference " << reference;
+    EXPECT_LT(tight.fragments_dropped, 900u) << "reference " << reference;
+    EXPECT_EQ(img.width, 40);
+    // Less than the lists themselves: every fragment is dropped, the background stays.
+    options.max_fragment_memory = 1;
+    RenderStats none;
+    img = intersecting_quads("exact", options, &none);
+    EXPECT_EQ(none.fragments_dropped, 1600u);
+    EXPECT_EQ(img.pixel(20, 10)[0], 0);
+    EXPECT_EQ(img.pixel(20, 10)[1], 0);
+  }
 }
 
 }  // namespace
