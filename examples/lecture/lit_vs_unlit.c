@@ -9,19 +9,7 @@
 
 void drawTeapot() { glutSolidTeapot(1.0); }
 
-static void panel(const LectureImage* img, int index) {
-  double aspect = lecture_panel(img, index, 2, 0, 1);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  lecture_perspective(40.0, aspect, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  GLfloat light_position[] = {1., 1., 1., 0.};
-  glLightfv(GL_LIGHT0, GL_POSITION, light_position);
-  glTranslatef(0.0f, 0.0f, -6.0f);
-  glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
-  glRotatef(-20.0f, 0.0f, 1.0f, 0.0f);
-}
+static void panel(const LectureImage* img, int index) { lecture_teapot_panel(img, index, 2); }
 
 int main(int argc, char** argv) {
   LectureImage img;

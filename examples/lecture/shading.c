@@ -10,14 +10,7 @@
 #include "common/lecture.h"
 
 static void panel(const LectureImage* img, int index, GLenum model) {
-  double aspect = lecture_panel(img, index, 2, 0, 1);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  lecture_perspective(40.0, aspect, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  GLfloat light_position[] = {1., 1., 1., 0.};
-  glLightfv(GL_LIGHT0, GL_POSITION, light_position);
+  lecture_lit_view(lecture_panel(img, index, 2, 0, 1));
   glTranslatef(0.0f, 0.0f, -5.0f);
   glRotatef(-70.0f, 1.0f, 0.0f, 0.0f);
   /* --- the lecture's code ------------------------------------------------------------- */

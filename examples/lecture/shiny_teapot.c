@@ -28,16 +28,7 @@ int main(int argc, char** argv) {
   glEnable(GL_LIGHTING);
   glEnable(GL_LIGHT0);
   glEnable(GL_NORMALIZE);
-  glMatrixMode(GL_PROJECTION);
-  lecture_perspective(40.0, 1.0, 1.0, 20.0);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-  /* The direction of the white light source is (1, 1, 1), given in eye space. */
-  GLfloat light_position[] = {1., 1., 1., 0.};
-  glLightfv(GL_LIGHT0, GL_POSITION, light_position);
-  glTranslatef(0.0f, 0.0f, -6.0f);
-  glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
-  glRotatef(-20.0f, 0.0f, 1.0f, 0.0f);
+  lecture_teapot_view(1.0); /* light from (1, 1, 1) in eye space; the teapot 6 units away */
   shinyRedMaterial();
   drawTeapot();
   return lecture_end(&img);

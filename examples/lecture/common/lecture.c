@@ -69,6 +69,28 @@ double lecture_panel(const LectureImage* img, int index, int count, int row, int
   return (double)w / h;
 }
 
+void lecture_lit_view(double aspect) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  lecture_perspective(40.0, aspect, 1.0, 20.0);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  /* The direction of the white light source is (1, 1, 1), given in eye space. */
+  GLfloat light_position[] = {1., 1., 1., 0.};
+  glLightfv(GL_LIGHT0, GL_POSITION, light_position);
+}
+
+void lecture_teapot_view(double aspect) {
+  lecture_lit_view(aspect);
+  glTranslatef(0.0f, 0.0f, -6.0f);
+  glRotatef(20.0f, 1.0f, 0.0f, 0.0f);
+  glRotatef(-20.0f, 0.0f, 1.0f, 0.0f);
+}
+
+void lecture_teapot_panel(const LectureImage* img, int index, int count) {
+  lecture_teapot_view(lecture_panel(img, index, count, 0, 1));
+}
+
 void wall(int n) {
   glNormal3f(0., 0., 1.);
   glBegin(GL_QUADS);

@@ -39,6 +39,18 @@ void lecture_perspective(double fovy_degrees, double aspect, double z_near, doub
  * viewport and returns its aspect ratio. */
 double lecture_panel(const LectureImage* img, int index, int count, int row, int rows);
 
+/* The lecture's usual view: a 40-degree perspective of `aspect`, the modelview reset, and
+ * the white directional light from (1, 1, 1) set in eye space. */
+void lecture_lit_view(double aspect);
+
+/* The lit view with the teapot seen from 6 units, turned 20 degrees about x and -20 about y
+ * (the shiny-teapot figure). */
+void lecture_teapot_view(double aspect);
+
+/* Panel `index` of `count` in one row, with the teapot view: the lit-versus-unlit,
+ * reflection-terms and light-colours figures. */
+void lecture_teapot_panel(const LectureImage* img, int index, int count);
+
 /* The lecture's wall (its mesh-size slides): the 8 x 8 square at z = 0 facing +z, drawn as
  * n x n GL_QUADS with one normal. Used by the mesh-size, spot, attenuation and
  * directional-versus-point examples. */
