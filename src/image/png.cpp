@@ -82,7 +82,8 @@ bool write_png(const Image& image, const std::string& path, std::string* error) 
 }
 
 bool read_image(const std::string& path, Image& out, std::string* error, int max_side) {
-  // Only PNG and JPEG: stb_image would also take headerless formats (TGA) from any bytes.
+  // Only PNG, JPEG and binary PPM/PGM (what Mesa's test programs write): stb_image would also
+  // take headerless formats (TGA) from almost any bytes.
   unsigned char magic[8] = {};
   {
     std::ifstream f(path, std::ios::binary);
@@ -95,8 +96,9 @@ bool read_image(const std::string& path, Image& out, std::string* error, int max
   static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   bool png = std::memcmp(magic, kPng, 8) == 0;
   bool jpeg = magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff;
-  if (!png && !jpeg) {
-    if (error) *error = "cannot read image " + path + ": not a PNG or JPEG file";
+  bool pnm = magic[0] == 'P' && (magic[1] == '5' || magic[1] == '6');
+  if (!png && !jpeg && !pnm) {
+    if (error) *error = "cannot read image " + path + ": not a PNG, JPEG or PPM file";
     return false;
   }
   int w = 0, h = 0, channels = 0;

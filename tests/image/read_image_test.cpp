@@ -1,19 +1,23 @@
-// Reading texture images: only PNG and JPEG, and a size declared in the header is checked
+// Reading images: only PNG, JPEG and binary PPM, and a size declared in the header is checked
 // before anything is decoded. The inputs are the fuzzers' findings (fuzz/regressions/png/).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <string>
+
 #include "shadelab/image.hpp"
+#include "support/test_support.hpp"
 
 namespace shadelab {
 namespace {
 
 // 23 bytes that stb_image takes for a TGA header declaring 8066 x 39688 pixels: decoding it
-// wanted more than 2 GB (found by fuzz_png). Not a PNG or JPEG, so refused at once.
-TEST(ReadImage, RefusesFormatsOtherThanPngAndJpeg) {
+// wanted more than 2 GB (found by fuzz_png). Not a PNG, JPEG or PPM, so refused at once.
+TEST(ReadImage, RefusesFormatsOtherThanPngJpegAndPpm) {
   Image img;
   std::string error;
   EXPECT_FALSE(read_image("fuzz/regressions/png/oom-huge-header.bin", img, &error));
-  EXPECT_EQ(error, "cannot read image fuzz/regressions/png/oom-huge-header.bin: not a PNG or JPEG file");
+  EXPECT_EQ(error, "cannot read image fuzz/regressions/png/oom-huge-header.bin: not a PNG, JPEG or PPM file");
   EXPECT_EQ(img.width, 0);
 }
 
@@ -29,6 +33,23 @@ TEST(ReadImage, ChecksTheDeclaredSizeBeforeDecoding) {
   EXPECT_TRUE(read_image("scenes/textures/bricks.png", img, &error, 64)) << error;
   EXPECT_EQ(img.width, 64);
   EXPECT_EQ(img.rgba.size(), 64u * 64u * 4u);
+}
+
+// Binary PPM, as Mesa's GLSL benchmark writes it (bench/run.sh compares it with gl_compare).
+TEST(ReadImage, ReadsBinaryPpm) {
+  std::string path = test::output_dir() + "/two.ppm";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_TRUE(f);
+  const unsigned char pixels[6] = {255, 0, 0, 0, 0, 255};
+  std::fprintf(f, "P6\n2 1\n255\n");
+  std::fwrite(pixels, 1, 6, f);
+  std::fclose(f);
+  Image img;
+  std::string error;
+  ASSERT_TRUE(read_image(path, img, &error)) << error;
+  EXPECT_EQ(img.width, 2);
+  EXPECT_EQ(img.pixel(1, 0)[2], 255);
+  EXPECT_EQ(img.pixel(1, 0)[3], 255);
 }
 
 TEST(ReadImage, MissingFileSaysWhy) {
