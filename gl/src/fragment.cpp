@@ -42,13 +42,16 @@ void clear_color(GlContext& c) {
   scratch.clear_color(c.raster.clear_color);  // the core's float-to-byte rounding
   const std::uint8_t* px = scratch.color.data();
   bool all = mask[0] && mask[1] && mask[2] && mask[3];
+  if (all) {  // whole pixels: one 32-bit store each, vectorized
+    std::uint32_t value;
+    std::memcpy(&value, px, 4);
+    auto* pixels = reinterpret_cast<std::uint32_t*>(c.fb.color.data());
+    for_pixels(c, [&](std::size_t begin, std::size_t end) { std::fill(pixels + begin, pixels + end, value); });
+    return;
+  }
   for_pixels(c, [&](std::size_t begin, std::size_t end) {
     std::uint8_t* color = c.fb.color.data();
     for (std::size_t i = begin * 4; i < end * 4; i += 4) {
-      if (all) {
-        std::memcpy(&color[i], px, 4);
-        continue;
-      }
       for (std::size_t k = 0; k < 4; ++k) {
         if (mask[k]) color[i + k] = px[k];
       }

@@ -75,26 +75,45 @@ HWY_INLINE Rgba vertex_color(const DrawJob& job, const TriSetup& t, const Weight
   return out;
 }
 
-// Per-pixel Phong: interpolated eye position and normal, re-normalized, lit.
+/// Per-pixel Phong for lanes of any width: the interpolated eye position `p` and normal `n`,
+/// re-normalized, lit; out[0..3] = red, green, blue (secondary added when separate) and alpha.
+template <class D>
+HWY_INLINE void phong_lanes(const DrawJob& job, const TriSetup& t, D d, const V3<D>& p, V3<D> n,
+                            hn::Vec<D> out[4]) {
+  V3<D> up{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
+  n = normalize_or(d, n, up, nullptr);
+  bool back = !t.front && job.plan.two_side;
+  LitIn<D> in;
+  in.p = p;
+  in.n = back ? V3<D>{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)} : n;
+  const MaterialParams& m = back ? job.plan.lighting.back : job.plan.lighting.front;
+  LitOut<D> lit = light_lanes(d, job.plan.lighting, m, in);
+  out[0] = lit.primary.x;
+  out[1] = lit.primary.y;
+  out[2] = lit.primary.z;
+  out[3] = hn::Set(d, m.alpha);
+  if (!job.plan.lighting.separate_specular) return;
+  out[0] = hn::Add(out[0], lit.secondary.x);
+  out[1] = hn::Add(out[1], lit.secondary.y);
+  out[2] = hn::Add(out[2], lit.secondary.z);
+}
+
+/// The interpolated eye position (first three) and normal (last three) of a group.
+HWY_INLINE void phong_inputs(const DrawJob& job, const TriSetup& t, const Weights& w, VF v[6]) {
+  const VaryingLayout& l = job.plan.layout;
+  for (int k = 0; k < 3; ++k) {
+    v[k] = varying(t, w, l.eye_position + k);
+    v[3 + k] = varying(t, w, l.eye_normal + k);
+  }
+}
+
+// Per-pixel Phong for one group.
 HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Weights& w) {
   const DF df;
-  const VaryingLayout& l = job.plan.layout;
-  LitIn<DF> in;
-  in.p = {varying(t, w, l.eye_position), varying(t, w, l.eye_position + 1),
-          varying(t, w, l.eye_position + 2)};
-  V3<DF> n{varying(t, w, l.eye_normal), varying(t, w, l.eye_normal + 1),
-           varying(t, w, l.eye_normal + 2)};
-  V3<DF> up{hn::Zero(df), hn::Zero(df), hn::Set(df, 1.0f)};
-  n = normalize_or(df, n, up, nullptr);
-  bool back = !t.front && job.plan.two_side;
-  in.n = back ? V3<DF>{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)} : n;
-  const MaterialParams& m = back ? job.plan.lighting.back : job.plan.lighting.front;
-  LitOut<DF> lit = light_lanes(df, job.plan.lighting, m, in);
-  Rgba out{{lit.primary.x, lit.primary.y, lit.primary.z, hn::Set(df, m.alpha)}};
-  if (!job.plan.lighting.separate_specular) return out;
-  out.c[0] = hn::Add(out.c[0], lit.secondary.x);
-  out.c[1] = hn::Add(out.c[1], lit.secondary.y);
-  out.c[2] = hn::Add(out.c[2], lit.secondary.z);
+  VF v[6];
+  phong_inputs(job, t, w, v);
+  Rgba out;
+  phong_lanes(job, t, df, V3<DF>{v[0], v[1], v[2]}, V3<DF>{v[3], v[4], v[5]}, out.c);
   return out;
 }
 

@@ -50,9 +50,56 @@ void close_group(const DrawJob& job, std::size_t index, const GroupPixels& g) {
   if (g.color) std::memcpy(&job.fb->color[index * 4], g.color, n * 4);
 }
 
+// Per-pixel Phong lights two groups at once where a float vector holds both (16 lanes with
+// AVX-512, 8 with AVX2): a group's interpolated position and normal wait here, after its depth
+// test, until a second group joins it or the triangle ends. The lanes compute exactly what
+// they would alone; only the write of the first group's colour is later, and no other
+// fragment of the same triangle touches its pixels.
+using DF2 = hn::ScalableTag<float>;
+constexpr bool kPairPhong = HWY_TARGET != HWY_SCALAR;
+
+struct PhongPair {
+  alignas(64) float in[6][kMaxLanes];  // position x y z, normal x y z; group k at k * lanes(DF)
+  std::size_t index[2];                // framebuffer index of each group's first pixel
+  MF live[2];
+  int count = 0;
+};
+
+void flush_phong(const DrawJob& job, const TriSetup& t, PhongPair& pair) {
+  if (pair.count == 0) return;
+  const DF df;
+  const std::size_t half = hn::Lanes(df);
+  alignas(64) float lit[4][kMaxLanes];
+  if (pair.count == 2 && hn::Lanes(DF2()) == 2 * half) {
+    const DF2 d2;
+    hn::Vec<DF2> out[4];
+    phong_lanes(job, t, d2, V3<DF2>{hn::Load(d2, pair.in[0]), hn::Load(d2, pair.in[1]), hn::Load(d2, pair.in[2])},
+                V3<DF2>{hn::Load(d2, pair.in[3]), hn::Load(d2, pair.in[4]), hn::Load(d2, pair.in[5])}, out);
+    for (int c = 0; c < 4; ++c) hn::Store(out[c], d2, lit[c]);
+  } else {
+    for (int k = 0; k < pair.count; ++k) {
+      VF out[4];
+      const std::size_t o = std::size_t(k) * half;
+      phong_lanes(job, t, df,
+                  V3<DF>{hn::LoadU(df, pair.in[0] + o), hn::LoadU(df, pair.in[1] + o), hn::LoadU(df, pair.in[2] + o)},
+                  V3<DF>{hn::LoadU(df, pair.in[3] + o), hn::LoadU(df, pair.in[4] + o), hn::LoadU(df, pair.in[5] + o)},
+                  out);
+      for (int c = 0; c < 4; ++c) hn::StoreU(out[c], df, lit[c] + o);
+    }
+  }
+  for (int k = 0; k < pair.count; ++k) {
+    const std::size_t o = std::size_t(k) * half;
+    Rgba color;
+    for (int c = 0; c < 4; ++c) color.c[c] = hn::LoadU(df, lit[c] + o);
+    write_colors(*job.frag, color, pair.live[k],
+                 reinterpret_cast<std::uint32_t*>(&job.fb->color[pair.index[k] * 4]));
+  }
+  pair.count = 0;
+}
+
 // The SIMD fragment path for the covered lanes `bits` of one group.
-void simd_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
-                unsigned bits, VD b0, VD b1, VF z) {
+void simd_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongPair& pair, int x,
+                int y, unsigned bits, VD b0, VD b1, VF z) {
   const DF df;
   const FragmentState& fs = *job.frag;
   std::size_t index = std::size_t(y) * std::size_t(job.fb->width) + std::size_t(x);
@@ -71,6 +118,16 @@ void simd_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
   if (passed && job.plan.writes_color) {
     const DD dd;
     Weights w = perspective_weights(t, b0, b1, hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0), b1));
+    if (kPairPhong && job.plan.phong && !g.valid) {  // whole group inside: its pixels, not a copy
+      VF in[6];
+      phong_inputs(job, t, w, in);
+      const std::size_t o = std::size_t(pair.count) * hn::Lanes(df);
+      for (int k = 0; k < 6; ++k) hn::StoreU(in[k], df, pair.in[k] + o);
+      pair.index[pair.count] = index;
+      pair.live[pair.count] = live;
+      if (++pair.count == 2) flush_phong(job, t, pair);
+      return;
+    }
     Rgba color = job.plan.phong ? phong_color(job, t, w) : vertex_color(job, t, w);
     write_colors(fs, color, live, g.color);
   }
@@ -92,7 +149,7 @@ void scalar_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int 
 }
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z).
-void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
+void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongPair& pair, int x, int y,
            const VD e[3], const VD thr[3]) {
   const DD dd;
   const DF df;
@@ -111,7 +168,7 @@ void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int 
                   hn::Mul(b2, hn::Set(dd, double(t.v[2]->z))));
   VF z = clamp_unit(hn::Add(hn::DemoteTo(df, zd), hn::Set(df, t.offset)));  // draw.cpp's emit
   if (job.plan.scalar_fragments) return scalar_group(job, t, ws, x, y, bits, e[0], e[1], z);
-  simd_group(job, t, ws, x, y, bits, b0, b1, z);
+  simd_group(job, t, ws, pair, x, y, bits, b0, b1, z);
 }
 
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
@@ -126,14 +183,16 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
     thr[e] = hn::Set(dd, t.threshold[e]);
   }
   const int gx0 = t.x0 & ~(lanes - 1);
+  PhongPair pair;
   for (int y = t.y0; y <= t.y1; ++y) {
     VD e[3];
     for (int k = 0; k < 3; ++k) e[k] = hn::Add(hn::Set(dd, double(edge_at(t, k, gx0, y))), lane_step[k]);
     for (int x = gx0; x <= t.x1; x += lanes) {
-      group(job, t, ws, x, y, e, thr);
+      group(job, t, ws, pair, x, y, e, thr);
       for (int k = 0; k < 3; ++k) e[k] = hn::Add(e[k], group_step[k]);
     }
   }
+  flush_phong(job, t, pair);
 }
 
 }  // namespace
