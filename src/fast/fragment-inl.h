@@ -165,14 +165,21 @@ HWY_INLINE VF clamp_unit(VF v) {
   return hn::IfThenElseZero(hn::Gt(v, hn::Zero(df)), hi);
 }
 
-// lround(clamp(v, 0, 1) * 255) as an integer lane: v * 255 >= 0, so rounding half away from
-// zero is trunc + (frac >= 0.5), both exact.
+// lround(clamp(v, 0, 1) * 255) as an integer lane, without a float-to-int conversion: s =
+// v * 255 lies in [0, 255], so s + 2^23 holds s rounded to an integer (half to even) in its
+// low mantissa bits, exactly. lround rounds half away from zero, which differs only where s is
+// exactly r + 0.5 (r even): one is added there. Checked against lround for every float in
+// [0, 255].
 HWY_INLINE hn::Vec<DU> to_unorm8(VF v) {
   const DF df;
+  const DU du;
+  const VF magic = hn::Set(df, 8388608.0f);
   VF s = hn::Mul(clamp_unit(v), hn::Set(df, 255.0f));
-  VF t = hn::Trunc(s);
-  VF r = hn::Add(t, hn::IfThenElseZero(hn::Ge(hn::Sub(s, t), hn::Set(df, 0.5f)), hn::Set(df, 1.0f)));
-  return hn::BitCast(DU(), hn::ConvertTo(DI(), r));
+  VF y = hn::Add(s, magic);
+  VF r = hn::Sub(y, magic);
+  auto half_up = hn::RebindMask(du, hn::Eq(hn::Sub(s, r), hn::Set(df, 0.5f)));
+  hn::Vec<DU> bits = hn::Sub(hn::BitCast(du, y), hn::BitCast(du, magic));
+  return hn::Add(bits, hn::IfThenElseZero(half_up, hn::Set(du, 1u)));
 }
 
 HWY_INLINE VF channel(hn::Vec<DU> px, int c) {
@@ -197,11 +204,17 @@ HWY_INLINE void write_colors(const FragmentState& fs, Rgba src, MF live, std::ui
                          hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst)));
     }
   }
-  hn::Vec<DU> packed = hn::Zero(du);
-  for (int c = 0; c < 4; ++c) {
-    hn::Vec<DU> v = fs.color_mask[c] ? to_unorm8(out.c[c])
-                                     : hn::And(hn::ShiftRightSame(old, 8 * c), hn::Set(du, 0xffu));
-    packed = hn::Or(packed, hn::ShiftLeftSame(v, 8 * c));
+  hn::Vec<DU> packed;
+  if (!masked) {
+    packed = hn::Or(hn::Or(to_unorm8(out.c[0]), hn::ShiftLeft<8>(to_unorm8(out.c[1]))),
+                    hn::Or(hn::ShiftLeft<16>(to_unorm8(out.c[2])), hn::ShiftLeft<24>(to_unorm8(out.c[3]))));
+  } else {
+    packed = hn::Zero(du);
+    for (int c = 0; c < 4; ++c) {
+      hn::Vec<DU> v = fs.color_mask[c] ? to_unorm8(out.c[c])
+                                       : hn::And(hn::ShiftRightSame(old, 8 * c), hn::Set(du, 0xffu));
+      packed = hn::Or(packed, hn::ShiftLeftSame(v, 8 * c));
+    }
   }
   hn::BlendedStore(packed, hn::RebindMask(du, live), du, pixels);
 }

@@ -97,8 +97,13 @@ void flush_phong(const DrawJob& job, const TriSetup& t, PhongPair& pair) {
   pair.count = 0;
 }
 
+// A triangle's fragment counts, kept in registers while it is drawn (RenderStats at the end).
+struct GroupCounts {
+  std::uint64_t fragments = 0, shaded = 0;
+};
+
 // The SIMD fragment path for the covered lanes `bits` of one group.
-void simd_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongPair& pair, int x,
+void simd_group(const DrawJob& job, const TriSetup& t, GroupCounts& counts, PhongPair& pair, int x,
                 int y, unsigned bits, VD b0, VD b1, VF z) {
   const DF df;
   const FragmentState& fs = *job.frag;
@@ -113,8 +118,8 @@ void simd_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongP
   }
   std::uint8_t passed = 0;
   hn::StoreMaskBits(df, live, &passed);
-  ws.stats.fragments += std::uint64_t(std::popcount(bits));
-  ws.stats.pixels_shaded += std::uint64_t(std::popcount(unsigned(passed)));
+  counts.fragments += unsigned(std::popcount(bits));
+  counts.shaded += unsigned(std::popcount(unsigned(passed)));
   if (passed && job.plan.writes_color) {
     const DD dd;
     Weights w = perspective_weights(t, b0, b1, hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0), b1));
@@ -149,8 +154,8 @@ void scalar_group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int 
 }
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z).
-void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongPair& pair, int x, int y,
-           const VD e[3], const VD thr[3]) {
+void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, GroupCounts& counts, PhongPair& pair,
+           int x, int y, const VD e[3], const VD thr[3]) {
   const DD dd;
   const DF df;
   auto cov = hn::And(hn::And(hn::Ge(e[0], thr[0]), hn::Ge(e[1], thr[1])), hn::Ge(e[2], thr[2]));
@@ -168,7 +173,7 @@ void group(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, PhongPair& 
                   hn::Mul(b2, hn::Set(dd, double(t.v[2]->z))));
   VF z = clamp_unit(hn::Add(hn::DemoteTo(df, zd), hn::Set(df, t.offset)));  // draw.cpp's emit
   if (job.plan.scalar_fragments) return scalar_group(job, t, ws, x, y, bits, e[0], e[1], z);
-  simd_group(job, t, ws, pair, x, y, bits, b0, b1, z);
+  simd_group(job, t, counts, pair, x, y, bits, b0, b1, z);
 }
 
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
@@ -184,15 +189,18 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   }
   const int gx0 = t.x0 & ~(lanes - 1);
   PhongPair pair;
+  GroupCounts counts;
   for (int y = t.y0; y <= t.y1; ++y) {
     VD e[3];
     for (int k = 0; k < 3; ++k) e[k] = hn::Add(hn::Set(dd, double(edge_at(t, k, gx0, y))), lane_step[k]);
     for (int x = gx0; x <= t.x1; x += lanes) {
-      group(job, t, ws, pair, x, y, e, thr);
+      group(job, t, ws, counts, pair, x, y, e, thr);
       for (int k = 0; k < 3; ++k) e[k] = hn::Add(e[k], group_step[k]);
     }
   }
   flush_phong(job, t, pair);
+  ws.stats.fragments += counts.fragments;
+  ws.stats.pixels_shaded += counts.shaded;
 }
 
 }  // namespace
