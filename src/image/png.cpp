@@ -114,6 +114,11 @@ bool read_image(const std::string& path, Image& out, std::string* error, int max
     if (error) *error = "cannot read image " + path + ": " + stbi_failure_reason();
     return false;
   }
+  if (w <= 0 || h <= 0) {  // stb_image's PPM reader takes a zero width or height
+    stbi_image_free(data);
+    if (error) *error = "cannot read image " + path + ": it has no pixels";
+    return false;
+  }
   out.width = w;
   out.height = h;
   out.rgba.assign(data, data + std::size_t(w) * std::size_t(h) * 4);

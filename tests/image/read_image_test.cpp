@@ -52,6 +52,16 @@ TEST(ReadImage, ReadsBinaryPpm) {
   EXPECT_EQ(img.pixel(1, 0)[3], 255);
 }
 
+// A PPM header with a zero size (found by fuzz_png): stb_image decodes it as an image without
+// pixels; it is refused.
+TEST(ReadImage, RefusesAnImageWithoutPixels) {
+  Image img;
+  std::string error;
+  EXPECT_FALSE(read_image("fuzz/regressions/png/ppm-zero-size.bin", img, &error));
+  EXPECT_EQ(error, "cannot read image fuzz/regressions/png/ppm-zero-size.bin: it has no pixels");
+  EXPECT_EQ(img.width, 0);
+}
+
 TEST(ReadImage, MissingFileSaysWhy) {
   Image img;
   std::string error;
