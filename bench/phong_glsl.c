@@ -16,6 +16,7 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 #include <GL/osmesa.h>
+#include <stb_image_write.h>
 
 static const char* kVertex =
     "#version 330 core\n"
@@ -167,12 +168,15 @@ int main(int argc, char** argv) {
   printf("RESULT scene=phong size=%dx%d triangles=%d frames=%d median_ms=%.3f min_ms=%.3f max_ms=%.3f\n",
          width, height, ni / 3, frames, median, times[0], times[frames - 1]);
   if (png) {
-    FILE* f = fopen(png, "wb"); /* a binary PPM, top row first */
-    if (!f) return 1;
-    fprintf(f, "P6\n%d %d\n255\n", width, height);
-    for (int y = height - 1; y >= 0; --y)
-      for (int x = 0; x < width; ++x) fwrite(&buffer[((size_t)y * width + x) * 4], 1, 3, f);
-    fclose(f);
+    /* RGB, top row first (OpenGL's rows run bottom up). */
+    unsigned char* rgb = malloc((size_t)width * height * 3);
+    if (!rgb) return 1;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        memcpy(&rgb[((size_t)y * width + x) * 3], &buffer[((size_t)(height - 1 - y) * width + x) * 4], 3);
+    int ok = stbi_write_png(png, width, height, 3, rgb, width * 3);
+    free(rgb);
+    if (!ok) return 1;
   }
   OSMesaDestroyContext(ctx);
   return 0;

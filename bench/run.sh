@@ -71,9 +71,9 @@ run_scene() {  # label, then the arguments of bench_gl_*
 run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
 run_scene "b-shiny-teapot" teapot
 run_scene "c-fill-wall-2-layers" fill
-l=$(median llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.ppm")
+l=$(median llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png")
 m=$(median $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png")
-agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.ppm" "$out/d-phong.shadelab.png" \
+agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.png" "$out/d-phong.shadelab.png" \
           --name d-phong --diff "$out/d-phong.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
 printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$(ratio "$m" "$l")" "$agree"
 echo "d-phong-8-lights,$l,-,$m,$(ratio "$m" "$l")" >> "$csv"

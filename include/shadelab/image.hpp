@@ -25,7 +25,7 @@ std::vector<std::uint8_t> encode_png(const Image& image);
 /// failed write never leaves a partial file. Returns false and sets `error` on failure.
 bool write_png(const Image& image, const std::string& path, std::string* error);
 
-/// Reads a PNG, JPEG or binary PPM/PGM file as RGBA. Returns false and sets `error` on failure, and, without
+/// Reads a PNG or JPEG file as RGBA. Returns false and sets `error` on failure, and, without
 /// decoding anything, when the file's header declares a side longer than `max_side` pixels
 /// (a small file can declare a huge image; decoding it would take gigabytes).
 bool read_image(const std::string& path, Image& out, std::string* error, int max_side = 16384);

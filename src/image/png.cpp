@@ -82,8 +82,8 @@ bool write_png(const Image& image, const std::string& path, std::string* error) 
 }
 
 bool read_image(const std::string& path, Image& out, std::string* error, int max_side) {
-  // Only PNG, JPEG and binary PPM/PGM (what Mesa's test programs write): stb_image would also
-  // take headerless formats (TGA) from almost any bytes.
+  // Only PNG and JPEG: stb_image would also take headerless formats (TGA) from almost any
+  // bytes, and its PNM reader reads past the end of short files.
   unsigned char magic[8] = {};
   {
     std::ifstream f(path, std::ios::binary);
@@ -96,9 +96,8 @@ bool read_image(const std::string& path, Image& out, std::string* error, int max
   static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
   bool png = std::memcmp(magic, kPng, 8) == 0;
   bool jpeg = magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff;
-  bool pnm = magic[0] == 'P' && (magic[1] == '5' || magic[1] == '6');
-  if (!png && !jpeg && !pnm) {
-    if (error) *error = "cannot read image " + path + ": not a PNG, JPEG or PPM file";
+  if (!png && !jpeg) {
+    if (error) *error = "cannot read image " + path + ": not a PNG or JPEG file";
     return false;
   }
   int w = 0, h = 0, channels = 0;
@@ -114,7 +113,7 @@ bool read_image(const std::string& path, Image& out, std::string* error, int max
     if (error) *error = "cannot read image " + path + ": " + stbi_failure_reason();
     return false;
   }
-  if (w <= 0 || h <= 0) {  // stb_image's PPM reader takes a zero width or height
+  if (w <= 0 || h <= 0) {  // never an image without pixels
     stbi_image_free(data);
     if (error) *error = "cannot read image " + path + ": it has no pixels";
     return false;

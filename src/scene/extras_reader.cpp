@@ -65,7 +65,7 @@ void SceneReader::texture(const JsonValue& v, const std::string& path, SceneObje
   o.texture = load_texture(*file, v.type == Type::kString ? path : join_path(path, "file"), settings);
 }
 
-// Loads (once per file and settings) a PNG, JPEG or PPM, checking its size before decoding it.
+// Loads (once per file and settings) a PNG or JPEG, checking its size before decoding it.
 std::shared_ptr<const Texture> SceneReader::load_texture(const JsonValue& file, const std::string& path,
                                                          const Texture& settings) {
   if (!r_.is_type(file, Type::kString, path)) return nullptr;
