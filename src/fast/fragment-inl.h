@@ -1,14 +1,21 @@
-// SIMD fragment work for one group of horizontally adjacent pixels of one triangle: depth
-// test, perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
-// blending and the colour write. Each step is the reference's arithmetic lane by lane (double
-// interpolation, float blending, round-half-away conversion), so results match it bitwise
-// except for the powers in lighting. Per-target code (Highway).
+// SIMD fragment work for one block of pixels of one triangle: depth test,
+// perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
+// blending and the colour write. A block is two rows of as many pixels as the SIMD target has
+// double lanes (8 x 2 with AVX-512): coverage, depth and the perspective weights are computed
+// row by row in double lanes, exactly as the reference; the rest on one float vector holding
+// both rows. Depth, blending and the round-half-away conversion are the reference's
+// arithmetic lane by lane; varyings are interpolated in floats from the double weights (a few
+// float roundings from the reference's double sum), and lighting differs in its powers: the
+// differential tests hold colours within 1/255. Per-target code (Highway).
 #if defined(SHADELAB_FAST_FRAGMENT_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SHADELAB_FAST_FRAGMENT_INL_H_
 #undef SHADELAB_FAST_FRAGMENT_INL_H_
 #else
 #define SHADELAB_FAST_FRAGMENT_INL_H_
 #endif
+
+#include <cmath>
+#include <cstdint>
 
 #include "fast/lighting-inl.h"
 #include "fast/triangle.hpp"
@@ -19,59 +26,202 @@ namespace shadelab::fast::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 using DD = hn::ScalableTag<double>;
-using DF = hn::Rebind<float, DD>;          // one float per double lane
+using DF = hn::Rebind<float, DD>;          // one float per double lane: one row of a block
 using DU = hn::Rebind<std::uint32_t, DD>;  // one RGBA8 pixel per lane
-using DI = hn::Rebind<std::int32_t, DD>;
 using VD = hn::Vec<DD>;
 using VF = hn::Vec<DF>;
-using MF = hn::Mask<DF>;
 
-/// Normalized perspective weights of a group (reference_raster.inl's q0, q1, q2).
-struct Weights {
-  VD q0, q1, q2;
-};
+// A block's rows side by side in one vector, row 0 in the lower lanes (one row on the scalar
+// target, whose vectors have one lane).
+#if HWY_TARGET == HWY_SCALAR
+inline constexpr int kRows = 1;
+template <class DH>
+using Block = DH;
+#else
+inline constexpr int kRows = 2;
+template <class DH>
+using Block = hn::Twice<DH>;
+#endif
+using DB = Block<DF>;
+using DUB = Block<DU>;
+using DIB = hn::RebindToSigned<DUB>;
+using VB = hn::Vec<DB>;
+using MB = hn::Mask<DB>;
 
-HWY_INLINE Weights perspective_weights(const TriSetup& t, VD b0, VD b1, VD b2) {
-  const DD dd;
-  if (t.affine) return {b0, b1, b2};
-  VD q0 = hn::Mul(b0, hn::Set(dd, double(t.v[0]->inv_w)));
-  VD q1 = hn::Mul(b1, hn::Set(dd, double(t.v[1]->inv_w)));
-  VD q2 = hn::Mul(b2, hn::Set(dd, double(t.v[2]->inv_w)));
-  VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
-  return {hn::Mul(q0, inv), hn::Mul(q1, inv), hn::Mul(q2, inv)};
+/// One row per half: row 0 low, row 1 high.
+template <class DH>
+HWY_INLINE hn::Vec<Block<DH>> join_rows(DH dh, hn::Vec<DH> row0, hn::Vec<DH> row1) {
+  (void)dh;
+#if HWY_TARGET == HWY_SCALAR
+  (void)row1;
+  return row0;
+#else
+  return hn::Combine(Block<DH>(), row1, row0);
+#endif
 }
 
-/// Varying `k` at every lane. A value equal at the three vertices is taken as is: the
-/// reference's weighted sum rounds back to it exactly (the weights sum to 1 within 1e-15).
-HWY_INLINE VF varying(const TriSetup& t, const Weights& w, int k) {
+template <class DH>
+HWY_INLINE hn::Vec<DH> row_of(DH dh, hn::Vec<Block<DH>> v, int r) {
+#if HWY_TARGET == HWY_SCALAR
+  (void)dh, (void)r;
+  return v;
+#else
+  return r == 0 ? hn::LowerHalf(dh, v) : hn::UpperHalf(dh, v);
+#endif
+}
+
+/// Bit `r * Lanes(DD) + i` of a block's bits is lane i of row r.
+HWY_INLINE unsigned row_bits(unsigned bits, int r) {
+  const unsigned lanes = unsigned(hn::Lanes(DD()));
+  return (bits >> (unsigned(r) * lanes)) & ((1u << lanes) - 1u);
+}
+
+HWY_INLINE MB block_mask(unsigned bits) {
+  std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
+  return hn::LoadMaskBits(DB(), bytes);
+}
+
+HWY_INLINE unsigned block_bits(MB m) {
+  std::uint8_t bytes[8] = {};
+  hn::StoreMaskBits(DB(), m, bytes);
+  return unsigned(bytes[0]) | unsigned(bytes[1]) << 8;
+}
+
+/// The rows of a block from memory (each row's own address).
+template <class DH, typename T>
+HWY_INLINE hn::Vec<Block<DH>> load_rows(DH dh, T* const rows[kRows]) {
+  return join_rows(dh, hn::LoadU(dh, rows[0]), hn::LoadU(dh, rows[kRows - 1]));
+}
+
+/// Stores the lanes set in `bits` of each row.
+template <class DH, typename T>
+HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const rows[kRows]) {
+  for (int r = 0; r < kRows; ++r) {
+    std::uint8_t b = std::uint8_t(row_bits(bits, r));
+    if (b) hn::BlendedStore(row_of(dh, v, r), hn::LoadMaskBits(dh, &b), dh, rows[r]);
+  }
+}
+
+/// Normalized perspective weights of each row of a block (reference_raster.inl's q0, q1, q2),
+/// and q0, q1 of the whole block in floats.
+struct Weights {
+  VD q0[kRows], q1[kRows], q2[kRows];
+  VB f0, f1;
+};
+
+HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], const VD b1[kRows]) {
+  const DD dd;
+  Weights w;
+  for (int r = 0; r < kRows; ++r) {
+    VD b2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0[r]), b1[r]);
+    if (t.affine) {
+      w.q0[r] = b0[r], w.q1[r] = b1[r], w.q2[r] = b2;
+      continue;
+    }
+    VD q0 = hn::Mul(b0[r], hn::Set(dd, double(t.v[0]->inv_w)));
+    VD q1 = hn::Mul(b1[r], hn::Set(dd, double(t.v[1]->inv_w)));
+    VD q2 = hn::Mul(b2, hn::Set(dd, double(t.v[2]->inv_w)));
+    VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
+    w.q0[r] = hn::Mul(q0, inv), w.q1[r] = hn::Mul(q1, inv), w.q2[r] = hn::Mul(q2, inv);
+  }
+  const DF df;
+  w.f0 = join_rows(df, hn::DemoteTo(df, w.q0[0]), hn::DemoteTo(df, w.q0[kRows - 1]));
+  w.f1 = join_rows(df, hn::DemoteTo(df, w.q1[0]), hn::DemoteTo(df, w.q1[kRows - 1]));
+  return w;
+}
+
+/// Varying `k` at every lane, as the reference computes it: the weighted sum in doubles.
+HWY_INLINE VB exact_varying(const TriSetup& t, const Weights& w, int k) {
   const DD dd;
   const DF df;
   float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
-  if (a0 == a1 && a1 == a2) return hn::Set(df, a0);
-  VD s = hn::Add(hn::Add(hn::Mul(w.q0, hn::Set(dd, double(a0))), hn::Mul(w.q1, hn::Set(dd, double(a1)))),
-                 hn::Mul(w.q2, hn::Set(dd, double(a2))));
-  return hn::DemoteTo(df, s);
+  VF rows[kRows];
+  for (int r = 0; r < kRows; ++r) {
+    VD s = hn::Add(hn::Add(hn::Mul(w.q0[r], hn::Set(dd, double(a0))), hn::Mul(w.q1[r], hn::Set(dd, double(a1)))),
+                   hn::Mul(w.q2[r], hn::Set(dd, double(a2))));
+    rows[r] = hn::DemoteTo(df, s);
+  }
+  return join_rows(df, rows[0], rows[kRows - 1]);
+}
+
+/// One varying over one triangle, set up once per triangle and tile: a2 + q0 (a0 - a2) +
+/// q1 (a1 - a2) in floats. The reference's double sum q0 a0 + q1 a1 + q2 a2 differs from it
+/// by a few float roundings of the largest |a| (q0 + q1 + q2 = 1), far below the 1/255 of a
+/// colour step. A value equal at the three vertices (and flat shading's provoking value) is
+/// taken as is, as the reference's sum rounds back to it exactly; non-finite values take the
+/// reference's own arithmetic.
+struct Plane {
+  enum Kind : std::uint8_t { kConstant, kLinear, kExact } kind = kConstant;
+  float base = 0.0f, d0 = 0.0f, d1 = 0.0f;
+  int k = 0;
+};
+
+HWY_INLINE Plane plane_of(const TriSetup& t, int k, const float* flat) {
+  Plane p;
+  p.k = k;
+  if (flat) {
+    p.base = flat[k];
+    return p;
+  }
+  float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
+  p.base = a2;
+  if (a0 == a1 && a1 == a2) return p;
+  if (!(std::isfinite(a0) && std::isfinite(a1) && std::isfinite(a2))) {
+    p.kind = Plane::kExact;
+    return p;
+  }
+  p.kind = Plane::kLinear;
+  p.d0 = a0 - a2;
+  p.d1 = a1 - a2;
+  return p;
+}
+
+HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
+  const DB db;
+  switch (p.kind) {
+    case Plane::kConstant: return hn::Set(db, p.base);
+    case Plane::kLinear:
+      return hn::Add(hn::Add(hn::Set(db, p.base), hn::Mul(w.f0, hn::Set(db, p.d0))), hn::Mul(w.f1, hn::Set(db, p.d1)));
+    case Plane::kExact: break;
+  }
+  return exact_varying(t, w, p.k);
+}
+
+/// The varyings a triangle's fragments read: its colours (primary, then secondary when
+/// separate) or, for per-pixel Phong, its eye position and normal.
+struct TrianglePlanes {
+  Plane color[4], secondary[3];
+  bool has_secondary = false;
+  Plane phong[6];
+};
+
+HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
+  const VaryingLayout& l = job.plan.layout;
+  if (job.plan.phong) {
+    for (int k = 0; k < 3; ++k) {
+      out.phong[k] = plane_of(t, l.eye_position + k, nullptr);
+      out.phong[3 + k] = plane_of(t, l.eye_normal + k, nullptr);
+    }
+    return;
+  }
+  const int color = t.front ? l.front_color : l.back_color;
+  const int secondary = t.front ? l.front_secondary : l.back_secondary;
+  for (int c = 0; c < 4; ++c) out.color[c] = plane_of(t, color + c, t.flat);
+  out.has_secondary = secondary >= 0;
+  if (!out.has_secondary) return;
+  for (int c = 0; c < 3; ++c) out.secondary[c] = plane_of(t, secondary + c, t.flat);
 }
 
 struct Rgba {
-  VF c[4];
+  VB c[4];
 };
 
 // Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp).
-HWY_INLINE Rgba vertex_color(const DrawJob& job, const TriSetup& t, const Weights& w) {
-  const DF df;
-  const VaryingLayout& l = job.plan.layout;
-  int color = t.front ? l.front_color : l.back_color;
-  int secondary = t.front ? l.front_secondary : l.back_secondary;
+HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w) {
   Rgba out;
-  for (int c = 0; c < 4; ++c) {
-    out.c[c] = t.flat ? hn::Set(df, t.flat[color + c]) : varying(t, w, color + c);
-  }
-  if (secondary < 0) return out;
-  for (int c = 0; c < 3; ++c) {
-    VF s = t.flat ? hn::Set(df, t.flat[secondary + c]) : varying(t, w, secondary + c);
-    out.c[c] = hn::Add(out.c[c], s);
-  }
+  for (int c = 0; c < 4; ++c) out.c[c] = varying(t, w, planes.color[c]);
+  if (!planes.has_secondary) return out;
+  for (int c = 0; c < 3; ++c) out.c[c] = hn::Add(out.c[c], varying(t, w, planes.secondary[c]));
   return out;
 }
 
@@ -98,30 +248,22 @@ HWY_INLINE void phong_lanes(const DrawJob& job, const TriSetup& t, D d, const V3
   out[2] = hn::Add(out[2], lit.secondary.z);
 }
 
-/// The interpolated eye position (first three) and normal (last three) of a group.
-HWY_INLINE void phong_inputs(const DrawJob& job, const TriSetup& t, const Weights& w, VF v[6]) {
-  const VaryingLayout& l = job.plan.layout;
-  for (int k = 0; k < 3; ++k) {
-    v[k] = varying(t, w, l.eye_position + k);
-    v[3 + k] = varying(t, w, l.eye_normal + k);
-  }
-}
-
-// Per-pixel Phong for one group.
-HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Weights& w) {
-  const DF df;
-  VF v[6];
-  phong_inputs(job, t, w, v);
+// Per-pixel Phong for one block: the interpolated eye position and normal, lit.
+HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes,
+                            const Weights& w) {
+  const DB db;
+  VB v[6];
+  for (int k = 0; k < 6; ++k) v[k] = varying(t, w, planes.phong[k]);
   Rgba out;
-  phong_lanes(job, t, df, V3<DF>{v[0], v[1], v[2]}, V3<DF>{v[3], v[4], v[5]}, out.c);
+  phong_lanes(job, t, db, V3<DB>{v[0], v[1], v[2]}, V3<DB>{v[3], v[4], v[5]}, out.c);
   return out;
 }
 
 /// fragment_ops.cpp's compare(func, incoming, stored).
-HWY_INLINE MF depth_compare(CompareFunc func, VF z, VF stored) {
-  const DF df;
+HWY_INLINE MB depth_compare(CompareFunc func, VB z, VB stored) {
+  const DB db;
   switch (func) {
-    case CompareFunc::kNever: return hn::FirstN(df, 0);
+    case CompareFunc::kNever: return hn::FirstN(db, 0);
     case CompareFunc::kLess: return hn::Lt(z, stored);
     case CompareFunc::kEqual: return hn::Eq(z, stored);
     case CompareFunc::kLequal: return hn::Le(z, stored);
@@ -130,17 +272,17 @@ HWY_INLINE MF depth_compare(CompareFunc func, VF z, VF stored) {
     case CompareFunc::kGequal: return hn::Ge(z, stored);
     case CompareFunc::kAlways: break;
   }
-  return hn::FirstN(df, hn::Lanes(df));
+  return hn::FirstN(db, hn::Lanes(db));
 }
 
-HWY_INLINE VF one_minus(VF v) { return hn::Sub(hn::Set(DF(), 1.0f), v); }
+HWY_INLINE VB one_minus(VB v) { return hn::Sub(hn::Set(DB(), 1.0f), v); }
 
 /// fragment_ops.cpp's blend_factor for channel c.
-HWY_INLINE VF blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& dst) {
-  const DF df;
+HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& dst) {
+  const DB db;
   switch (f) {
-    case BlendFactor::kZero: return hn::Zero(df);
-    case BlendFactor::kOne: return hn::Set(df, 1.0f);
+    case BlendFactor::kZero: return hn::Zero(db);
+    case BlendFactor::kOne: return hn::Set(db, 1.0f);
     case BlendFactor::kSrcColor: return src.c[c];
     case BlendFactor::kOneMinusSrcColor: return one_minus(src.c[c]);
     case BlendFactor::kDstColor: return dst.c[c];
@@ -150,73 +292,81 @@ HWY_INLINE VF blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& ds
     case BlendFactor::kDstAlpha: return dst.c[3];
     case BlendFactor::kOneMinusDstAlpha: return one_minus(dst.c[3]);
     case BlendFactor::kSrcAlphaSaturate: {
-      if (c == 3) return hn::Set(df, 1.0f);
-      VF b = one_minus(dst.c[3]);  // std::min(a, b) = (b < a) ? b : a
+      if (c == 3) return hn::Set(db, 1.0f);
+      VB b = one_minus(dst.c[3]);  // std::min(a, b) = (b < a) ? b : a
       return hn::IfThenElse(hn::Lt(b, src.c[3]), b, src.c[3]);
     }
   }
-  return hn::Set(df, 1.0f);
+  return hn::Set(db, 1.0f);
 }
 
 // fragment_ops.cpp's unit(): v > 0 ? min(v, 1) : 0, so NaN becomes 0.
-HWY_INLINE VF clamp_unit(VF v) {
-  const DF df;
-  VF hi = hn::IfThenElse(hn::Lt(v, hn::Set(df, 1.0f)), v, hn::Set(df, 1.0f));
-  return hn::IfThenElseZero(hn::Gt(v, hn::Zero(df)), hi);
+HWY_INLINE VB clamp_unit(VB v) {
+  const DB db;
+  VB hi = hn::IfThenElse(hn::Lt(v, hn::Set(db, 1.0f)), v, hn::Set(db, 1.0f));
+  return hn::IfThenElseZero(hn::Gt(v, hn::Zero(db)), hi);
 }
 
-// lround(clamp(v, 0, 1) * 255) as an integer lane, without a float-to-int conversion: s =
-// v * 255 lies in [0, 255], so s + 2^23 holds s rounded to an integer (half to even) in its
-// low mantissa bits, exactly. lround rounds half away from zero, which differs only where s is
-// exactly r + 0.5 (r even): one is added there. Checked against lround for every float in
-// [0, 255].
-HWY_INLINE hn::Vec<DU> to_unorm8(VF v) {
-  const DF df;
-  const DU du;
-  const VF magic = hn::Set(df, 8388608.0f);
-  VF s = hn::Mul(clamp_unit(v), hn::Set(df, 255.0f));
-  VF y = hn::Add(s, magic);
-  VF r = hn::Sub(y, magic);
-  auto half_up = hn::RebindMask(du, hn::Eq(hn::Sub(s, r), hn::Set(df, 0.5f)));
-  hn::Vec<DU> bits = hn::Sub(hn::BitCast(du, y), hn::BitCast(du, magic));
-  return hn::Add(bits, hn::IfThenElseZero(half_up, hn::Set(du, 1u)));
+// lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane, without a
+// float-to-int conversion: s = v * 255 lies in [0, 255], so s + 2^23 holds s rounded to an
+// integer (half to even) in its low mantissa bits, exactly. lround rounds half away from zero,
+// which differs only where s is exactly r + 0.5 (r even): one is added there. Checked against
+// lround for every float in [0, 255].
+HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
+  const DB db;
+  const DUB dub;
+  const VB magic = hn::Set(db, 8388608.0f);
+  VB s = hn::Mul(v, hn::Set(db, 255.0f));
+  VB y = hn::Add(s, magic);
+  VB r = hn::Sub(y, magic);
+  auto half_up = hn::RebindMask(dub, hn::Eq(hn::Sub(s, r), hn::Set(db, 0.5f)));
+  hn::Vec<DUB> bits = hn::Sub(hn::BitCast(dub, y), hn::BitCast(dub, magic));
+  return hn::Add(bits, hn::IfThenElseZero(half_up, hn::Set(dub, 1u)));
 }
 
-HWY_INLINE VF channel(hn::Vec<DU> px, int c) {
-  const DU du;
-  hn::Vec<DU> v = hn::And(hn::ShiftRightSame(px, 8 * c), hn::Set(du, 0xffu));
-  return hn::ConvertTo(DF(), hn::BitCast(DI(), v));
+HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
+  const DUB dub;
+  hn::Vec<DUB> v = hn::And(hn::ShiftRightSame(px, 8 * c), hn::Set(dub, 0xffu));
+  return hn::ConvertTo(DB(), hn::BitCast(DIB(), v));
 }
 
-/// fragment_ops.cpp's write_color for the live lanes of a group at `pixels`.
-HWY_INLINE void write_colors(const FragmentState& fs, Rgba src, MF live, std::uint32_t* pixels) {
-  const DF df;
-  const DU du;
-  for (VF& c : src.c) c = clamp_unit(c);
+/// fragment_ops.cpp's write_color for the lanes of a block set in `live`, at `rows`.
+HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
+                             std::uint32_t* const rows[kRows]) {
+  const DB db;
+  const DUB dub;
+  Rgba out;
+  for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
   bool masked = !(fs.color_mask[0] && fs.color_mask[1] && fs.color_mask[2] && fs.color_mask[3]);
-  hn::Vec<DU> old = (fs.blend.enabled || masked) ? hn::LoadU(du, pixels) : hn::Zero(du);
-  Rgba out = src;
+  hn::Vec<DUB> old = (fs.blend.enabled || masked) ? load_rows(DU(), rows) : hn::Zero(dub);
   if (fs.blend.enabled) {
+    const Rgba src = out;
     Rgba dst;
-    for (int c = 0; c < 4; ++c) dst.c[c] = hn::Div(channel(old, c), hn::Set(df, 255.0f));
-    for (int c = 0; c < 4; ++c) {
-      out.c[c] = hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
-                         hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst)));
+    for (int c = 0; c < 4; ++c) dst.c[c] = hn::Div(channel(old, c), hn::Set(db, 255.0f));
+    if (fs.blend.src == BlendFactor::kSrcAlpha && fs.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
+      const VB a = src.c[3], one_minus_a = one_minus(src.c[3]);  // the usual transparency
+      for (int c = 0; c < 4; ++c) out.c[c] = hn::Add(hn::Mul(src.c[c], a), hn::Mul(dst.c[c], one_minus_a));
+    } else {
+      for (int c = 0; c < 4; ++c) {
+        out.c[c] = hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
+                           hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst)));
+      }
     }
+    for (VB& c : out.c) c = clamp_unit(c);
   }
-  hn::Vec<DU> packed;
+  hn::Vec<DUB> packed;
   if (!masked) {
     packed = hn::Or(hn::Or(to_unorm8(out.c[0]), hn::ShiftLeft<8>(to_unorm8(out.c[1]))),
                     hn::Or(hn::ShiftLeft<16>(to_unorm8(out.c[2])), hn::ShiftLeft<24>(to_unorm8(out.c[3]))));
   } else {
-    packed = hn::Zero(du);
+    packed = hn::Zero(dub);
     for (int c = 0; c < 4; ++c) {
-      hn::Vec<DU> v = fs.color_mask[c] ? to_unorm8(out.c[c])
-                                       : hn::And(hn::ShiftRightSame(old, 8 * c), hn::Set(du, 0xffu));
+      hn::Vec<DUB> v = fs.color_mask[c] ? to_unorm8(out.c[c])
+                                        : hn::And(hn::ShiftRightSame(old, 8 * c), hn::Set(dub, 0xffu));
       packed = hn::Or(packed, hn::ShiftLeftSame(v, 8 * c));
     }
   }
-  hn::BlendedStore(packed, hn::RebindMask(du, live), du, pixels);
+  store_rows(DU(), packed, live, rows);
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE
