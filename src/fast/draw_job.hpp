@@ -19,6 +19,14 @@ inline constexpr int kTileShift = 6;  ///< 64 x 64 pixel tiles
 inline constexpr int kTileSize = 1 << kTileShift;
 inline constexpr float kMinClipW = 1e-6f;  ///< clip.cpp's w >= epsilon plane
 
+/// The first and last pixel whose centre (x + 1/2) lies in [lo, hi], snapped coordinates: no
+/// pixel outside can be covered. The reference rasterizer scans a box one pixel wider on
+/// every side; its edge tests leave those pixels uncovered, so coverage is the same.
+inline int first_centre(std::int64_t lo) {
+  return int((lo - detail::kSubpixelOne / 2 + detail::kSubpixelOne - 1) >> detail::kSubpixelBits);
+}
+inline int last_centre(std::int64_t hi) { return int((hi - detail::kSubpixelOne / 2) >> detail::kSubpixelBits); }
+
 /// A vertex after the viewport transform, as setup and the rasterizer read it. Values are
 /// the reference's to_window results bit for bit; sx, sy are snap()'s.
 struct RasterVertex {

@@ -151,29 +151,17 @@ HWY_INLINE VB exact_varying(const TriSetup& t, const Weights& w, int k) {
 /// taken as is, as the reference's sum rounds back to it exactly; non-finite values take the
 /// reference's own arithmetic.
 struct Plane {
-  enum Kind : std::uint8_t { kConstant, kLinear, kExact } kind = kConstant;
-  float base = 0.0f, d0 = 0.0f, d1 = 0.0f;
-  int k = 0;
+  enum Kind : std::uint8_t { kConstant, kLinear, kExact } kind;
+  float base, d0, d1;
+  int k;
 };
 
 HWY_INLINE Plane plane_of(const TriSetup& t, int k, const float* flat) {
-  Plane p;
-  p.k = k;
-  if (flat) {
-    p.base = flat[k];
-    return p;
-  }
-  float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
-  p.base = a2;
-  if (a0 == a1 && a1 == a2) return p;
-  if (!(std::isfinite(a0) && std::isfinite(a1) && std::isfinite(a2))) {
-    p.kind = Plane::kExact;
-    return p;
-  }
-  p.kind = Plane::kLinear;
-  p.d0 = a0 - a2;
-  p.d1 = a1 - a2;
-  return p;
+  if (flat) return {Plane::kConstant, flat[k], 0.0f, 0.0f, k};
+  const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
+  if (a0 == a1 && a1 == a2) return {Plane::kConstant, a2, 0.0f, 0.0f, k};
+  if (!(std::isfinite(a0) && std::isfinite(a1) && std::isfinite(a2))) return {Plane::kExact, a2, 0.0f, 0.0f, k};
+  return {Plane::kLinear, a2, a0 - a2, a1 - a2, k};
 }
 
 HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
@@ -191,19 +179,23 @@ HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
 /// separate) or, for per-pixel Phong, its eye position and normal.
 struct TrianglePlanes {
   Plane color[4], secondary[3];
-  bool has_secondary = false;
+  bool has_secondary;
   Plane phong[6];
+  bool ready = false;  // set up at the first fragment that passes its tests
 };
 
 HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   const VaryingLayout& l = job.plan.layout;
   if (job.plan.phong) {
+    out.ready = true;
     for (int k = 0; k < 3; ++k) {
       out.phong[k] = plane_of(t, l.eye_position + k, nullptr);
       out.phong[3 + k] = plane_of(t, l.eye_normal + k, nullptr);
     }
     return;
   }
+  out.has_secondary = false;
+  out.ready = true;
   const int color = t.front ? l.front_color : l.back_color;
   const int secondary = t.front ? l.front_secondary : l.back_secondary;
   for (int c = 0; c < 4; ++c) out.color[c] = plane_of(t, color + c, t.flat);

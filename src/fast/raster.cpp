@@ -82,7 +82,7 @@ struct GroupCounts {
 };
 
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour.
-void simd_block(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes, GroupCounts& counts,
+void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, GroupCounts& counts,
                 int x, int y, bool interior, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB z) {
   const DF df;
   const FragmentState& fs = *job.frag;
@@ -97,6 +97,7 @@ void simd_block(const DrawJob& job, const TriSetup& t, const TrianglePlanes& pla
   counts.fragments += unsigned(std::popcount(bits));
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
+    if (!planes.ready) set_up_planes(job, t, planes);
     Weights w = perspective_weights(t, b0, b1);
     Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
     write_colors(fs, color, passed, g.color);
@@ -121,7 +122,7 @@ void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
-void block(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes, WorkerScratch& ws,
+void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
            GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
   const DD dd;
   const DF df;
@@ -183,7 +184,6 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
                         (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
   TrianglePlanes planes;
-  if (!job.plan.scalar_fragments && job.plan.writes_color) set_up_planes(job, t, planes);
   GroupCounts counts;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
   for (int k = 0; k < 3; ++k) {

@@ -38,16 +38,16 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
   provoking = tri[2];
 }
 
-// The reference's pixel box, cut to the tile.
+// The pixels whose centres lie in the triangle's box, cut to the tile.
 bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t) {
   std::int64_t min_x = std::min({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t max_x = std::max({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t min_y = std::min({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
   std::int64_t max_y = std::max({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
-  t.x0 = int(std::max<std::int64_t>(tx, (min_x >> detail::kSubpixelBits) - 1));
-  t.x1 = int(std::min<std::int64_t>({job.fb->width - 1, tx + kTileSize - 1, (max_x >> detail::kSubpixelBits) + 1}));
-  t.y0 = int(std::max<std::int64_t>(ty, (min_y >> detail::kSubpixelBits) - 1));
-  t.y1 = int(std::min<std::int64_t>({job.fb->height - 1, ty + kTileSize - 1, (max_y >> detail::kSubpixelBits) + 1}));
+  t.x0 = std::max(tx, first_centre(min_x));
+  t.x1 = std::min({job.fb->width - 1, tx + kTileSize - 1, last_centre(max_x)});
+  t.y0 = std::max(ty, first_centre(min_y));
+  t.y1 = std::min({job.fb->height - 1, ty + kTileSize - 1, last_centre(max_y)});
   return t.x0 <= t.x1 && t.y0 <= t.y1;
 }
 

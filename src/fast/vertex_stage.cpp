@@ -91,6 +91,11 @@ HWY_INLINE void outcodes(DD dd, VD x, VD y, VD z, VD w, std::uint32_t* codes) {
   hn::StoreMaskBits(dd, hn::Ge(hn::Add(w, z), zero), &bits[4]);
   hn::StoreMaskBits(dd, hn::Ge(hn::Sub(w, z), zero), &bits[5]);
   hn::StoreMaskBits(dd, hn::Ge(hn::Sub(w, hn::Set(dd, double(kMinClipW))), zero), &bits[6]);
+  const std::uint8_t all = std::uint8_t((1u << hn::Lanes(dd)) - 1u);
+  if ((bits[0] & bits[1] & bits[2] & bits[3] & bits[4] & bits[5] & bits[6]) == all) {
+    for (std::size_t j = 0; j < hn::Lanes(dd); ++j) codes[j] = 0;  // every lane inside every plane
+    return;
+  }
   for (std::size_t j = 0; j < hn::Lanes(dd); ++j) {
     std::uint32_t c = 0;
     for (int k = 0; k < 7; ++k) c |= ((~bits[k] >> j) & 1u) << k;
