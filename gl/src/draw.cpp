@@ -214,7 +214,17 @@ void mark_batch(GlContext& c, const glm::mat4& projection, const std::vector<glm
              int(std::ceil(y1)) + 1);
 }
 
-bool finite_clip(const glm::mat4& projection, const glm::vec4& eye) {
+// Whether every entry is finite and at most 1e18 in magnitude: products of two such numbers,
+// and sums of four products, stay below 4e36, finite.
+bool bounded(const float* v, int n) {
+  bool ok = true;
+  for (int i = 0; i < n; ++i) ok = ok && std::fabs(v[i]) <= 1e18f;  // false for NaN
+  return ok;
+}
+
+// Whether projection * eye is finite; `small_projection`: bounded(projection), checked once.
+bool finite_clip(const glm::mat4& projection, bool small_projection, const glm::vec4& eye) {
+  if (small_projection && bounded(&eye[0], 4)) return true;  // no overflow possible
   glm::vec4 clip = projection * eye;
   return std::isfinite(clip.x) && std::isfinite(clip.y) && std::isfinite(clip.z) &&
          std::isfinite(clip.w);
@@ -244,9 +254,10 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   if (tris.empty()) return;
   Batch batch;
   std::vector<bool> finite(count);
+  const bool small_projection = bounded(&projection[0][0], 16);
   for (std::uint32_t i = 0; i < count; ++i) {
     batch.add(p.vertices[i]);
-    finite[i] = finite_clip(projection, p.vertices[i].eye);
+    finite[i] = finite_clip(projection, small_projection, p.vertices[i].eye);
   }
   bool flat = c.lighting.shade_model == GL_FLAT;
   for (const PrimitiveTriangle& t : tris) {
@@ -348,6 +359,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
     else fn(0, items);
   };
   std::atomic<bool> homogeneous{false};
+  const bool small_projection = bounded(&projection[0][0], 16);
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
     load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], &m.colors[begin],
          texture ? &m.raw_texcoords[begin] : nullptr);
@@ -355,7 +367,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
       glm::vec4 eye = p.modelview * m.positions[v];
       if (eye.w != 1.0f) homogeneous = true;
       m.positions[v] = eye;
-      m.finite[v] = finite_clip(projection, eye);
+      m.finite[v] = finite_clip(projection, small_projection, eye);
       if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
       else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
       if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
