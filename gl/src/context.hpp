@@ -183,6 +183,18 @@ struct ArrayScratch {
   std::vector<PrimitiveTriangle> pieces;
 };
 
+/// Reused buffers of the glBegin/glEnd path (draw.cpp's draw_vertices): the arrays of one
+/// draw_triangles call, kept across primitives so that drawing allocates nothing once they
+/// have grown.
+struct ImmediateScratch {
+  std::vector<glm::vec4> positions, colors, back_colors;
+  std::vector<glm::vec3> normals, secondary, back_secondary;
+  std::vector<glm::vec2> texcoords;
+  std::vector<Triangle> triangles;
+  std::vector<PrimitiveTriangle> pieces;
+  std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite
+};
+
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
 struct UserBuffer {
   void* data = nullptr;
@@ -213,6 +225,7 @@ struct GlContext {
   ClientArrays arrays;
   Primitive prim;
   ArrayScratch array_scratch;
+  ImmediateScratch immediate_scratch;
   std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                               GL_DONT_CARE};
 

@@ -157,22 +157,37 @@ glm::vec2 texcoord(const GlContext& c, glm::vec4 tc) {
   return st;
 }
 
-// Arrays for one draw_triangles call.
+// Arrays for one draw_triangles call, in the context's reused buffers: one entry per vertex
+// of the primitive (set), then any vertex a flat quad adds (add).
 struct Batch {
-  std::vector<glm::vec4> positions, colors, back_colors;
-  std::vector<glm::vec3> normals, secondary, back_secondary;
-  std::vector<glm::vec2> texcoords;
-  std::vector<Triangle> triangles;
+  ImmediateScratch& s;
+
+  Batch(ImmediateScratch& scratch, std::size_t vertices) : s(scratch) {
+    for (auto* v : {&s.positions, &s.colors, &s.back_colors}) v->resize(vertices);
+    for (auto* v : {&s.normals, &s.secondary, &s.back_secondary}) v->resize(vertices);
+    s.texcoords.resize(vertices);
+    s.triangles.clear();
+  }
+
+  void set(std::size_t i, const PrimitiveVertex& v) {
+    s.positions[i] = v.eye;
+    s.normals[i] = v.normal;
+    s.colors[i] = v.front;
+    s.back_colors[i] = v.back;
+    s.secondary[i] = v.front_secondary;
+    s.back_secondary[i] = v.back_secondary;
+    s.texcoords[i] = v.texcoord;
+  }
 
   std::uint32_t add(const PrimitiveVertex& v) {
-    positions.push_back(v.eye);
-    normals.push_back(v.normal);
-    colors.push_back(v.front);
-    back_colors.push_back(v.back);
-    secondary.push_back(v.front_secondary);
-    back_secondary.push_back(v.back_secondary);
-    texcoords.push_back(v.texcoord);
-    return std::uint32_t(positions.size() - 1);
+    s.positions.push_back(v.eye);
+    s.normals.push_back(v.normal);
+    s.colors.push_back(v.front);
+    s.back_colors.push_back(v.back);
+    s.secondary.push_back(v.front_secondary);
+    s.back_secondary.push_back(v.back_secondary);
+    s.texcoords.push_back(v.texcoord);
+    return std::uint32_t(s.positions.size() - 1);
   }
 };
 
@@ -218,7 +233,7 @@ void mark_batch(GlContext& c, const glm::mat4& projection, const std::vector<glm
 // and sums of four products, stay below 4e36, finite.
 bool bounded(const float* v, int n) {
   bool ok = true;
-  for (int i = 0; i < n; ++i) ok = ok && std::fabs(v[i]) <= 1e18f;  // false for NaN
+  for (int i = 0; i < n; ++i) ok &= std::fabs(v[i]) <= 1e18f;  // false for NaN
   return ok;
 }
 
@@ -234,37 +249,48 @@ bool finite_clip(const glm::mat4& projection, bool small_projection, const glm::
 // diagonal, when some vertex of it lies outside the view volume (it needs clipping); measured
 // through OSMesa (tests/gl-conformance/programs/quad_split.c). Mesa merges consecutive
 // glBegin(GL_QUADS)/glEnd pairs into one draw; here each pair decides for itself.
-QuadSplit quad_split(const GlContext& c, const glm::mat4& projection, std::uint32_t count) {
-  for (std::uint32_t i = 0; i < count; ++i) {
-    glm::vec4 v = projection * c.prim.vertices[i].eye;
-    bool inside = -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
-    if (!inside) return QuadSplit::kFromSecond;
-  }
-  return QuadSplit::kFromFirst;
+bool inside_view_volume(const glm::mat4& projection, const glm::vec4& eye) {
+  glm::vec4 v = projection * eye;
+  return -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
 }
 
 // Draws the first `count` vertices of the primitive.
 void draw_vertices(GlContext& c, std::uint32_t count) {
   Primitive& p = c.prim;
   if (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK) return;  // every polygon culled
+  if (count < 3) return;
   const glm::mat4& projection = c.projection.top();
-  std::vector<PrimitiveTriangle> tris;
-  QuadSplit split = p.mode == GL_QUADS ? quad_split(c, projection, count) : QuadSplit::kFromFirst;
-  decompose(p.mode, count, p.odd_strip_start, split, tris);
-  if (tris.empty()) return;
-  Batch batch;
-  std::vector<bool> finite(count);
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  // Per vertex, on the pipeline's threads when there are many: the draw's arrays, whether
+  // its clip coordinates are finite and, for quads, whether it lies in the view volume.
+  Batch batch(c.immediate_scratch, count);
+  std::vector<std::uint8_t>& finite = c.immediate_scratch.finite;
+  finite.resize(count);
   const bool small_projection = bounded(&projection[0][0], 16);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    batch.add(p.vertices[i]);
-    finite[i] = finite_clip(projection, small_projection, p.vertices[i].eye);
-  }
+  const bool quads = p.mode == GL_QUADS;
+  std::atomic<bool> outside{false};
+  auto vertices = [&](std::size_t begin, std::size_t end) {
+    bool out = false;
+    for (std::size_t i = begin; i < end; ++i) {
+      const PrimitiveVertex& v = p.vertices[i];
+      batch.set(i, v);
+      finite[i] = finite_clip(projection, small_projection, v.eye);
+      if (quads && !out) out = !inside_view_volume(projection, v.eye);
+    }
+    if (out) outside = true;
+  };
+  if (c.pipeline && count >= 8192) c.pipeline->parallel_for(count, 4096, vertices);
+  else vertices(0, count);
+  std::vector<PrimitiveTriangle>& tris = c.immediate_scratch.pieces;
+  tris.clear();
+  decompose(p.mode, count, p.odd_strip_start, outside ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
+  if (tris.empty()) return;
   bool flat = c.lighting.shade_model == GL_FLAT;
   for (const PrimitiveTriangle& t : tris) {
     if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
-    batch.triangles.push_back(flat ? flat_triangle(t, p.vertices, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
+    batch.s.triangles.push_back(flat ? flat_triangle(t, p.vertices, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
   }
-  if (batch.triangles.empty()) return;
+  if (batch.s.triangles.empty()) return;
 
   ShadeState shade;
   shade.lighting = false;  // colours lit per vertex above, unless deferred below
@@ -274,28 +300,28 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   const LightingState& l = c.lighting;
   bool lit = l.enabled && !p.deferred_lighting;  // colours lit per vertex above
   VertexInput in;
-  in.positions = batch.positions;
+  in.positions = batch.s.positions;
   if (p.deferred_lighting) {  // lit by the pipeline with the primitive's one material
     shade.lighting = true;
     shade.model = l.model;
     shade.lights = p.lights;
     shade.front = l.front;
     shade.back = l.back;
-    in.normals = batch.normals;
+    in.normals = batch.s.normals;
   } else {
-    in.colors = batch.colors;
+    in.colors = batch.s.colors;
   }
-  if (lit && c.lighting.model.two_side) in.back_colors = batch.back_colors;
+  if (lit && c.lighting.model.two_side) in.back_colors = batch.s.back_colors;
   if (lit && c.lighting.model.separate_specular) {
-    in.secondary_colors = batch.secondary;
-    if (c.lighting.model.two_side) in.back_secondary_colors = batch.back_secondary;
+    in.secondary_colors = batch.s.secondary;
+    if (c.lighting.model.two_side) in.back_secondary_colors = batch.s.back_secondary;
   }
-  if (shade.texture) in.texcoords = batch.texcoords;
-  in.triangles = batch.triangles;
+  if (shade.texture) in.texcoords = batch.s.texcoords;
+  in.triangles = batch.s.triangles;
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
-  mark_batch(c, projection, batch.positions);
+  mark_batch(c, projection, batch.s.positions);
 }
 
 // Draws what can be drawn of a long primitive and keeps the vertices it still needs.
