@@ -380,7 +380,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   const glm::mat4& projection = c.projection.top();
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   // Ranges of vertices on the pipeline's threads (the loader only reads the arrays).
-  auto in_parallel = [&](std::size_t items, const std::function<void(std::size_t, std::size_t)>& fn) {
+  auto in_parallel = [&](std::size_t items, const auto& fn) {
     if (c.pipeline && items >= 8192) c.pipeline->parallel_for(items, 4096, fn);
     else fn(0, items);
   };

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <cstddef>
-#include <functional>
+#include <type_traits>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -30,9 +30,25 @@ void end_primitive(GlContext& c);
 /// Fills object-space attributes of array elements first .. first + n - 1: positions,
 /// normals, colours and (when `texcoords` is not null) texture coordinates, taking the
 /// current value where an array is disabled.
-using ElementLoader = std::function<void(std::size_t first, std::size_t n, glm::vec4* positions,
-                                         glm::vec3* normals, glm::vec4* colors,
-                                         glm::vec4* texcoords)>;
+/// Called through a reference to the caller's function object: nothing is copied or
+/// allocated per draw.
+class ElementLoader {
+ public:
+  template <class F>
+    requires(!std::is_same_v<std::remove_cvref_t<F>, ElementLoader>)
+  ElementLoader(F&& f)  // NOLINT: converts from any loader function object
+      : object_(const_cast<void*>(static_cast<const void*>(&f))),
+        call_([](void* o, std::size_t first, std::size_t n, glm::vec4* p, glm::vec3* nm, glm::vec4* c,
+                 glm::vec4* t) { (*static_cast<std::remove_reference_t<F>*>(o))(first, n, p, nm, c, t); }) {}
+  void operator()(std::size_t first, std::size_t n, glm::vec4* positions, glm::vec3* normals,
+                  glm::vec4* colors, glm::vec4* texcoords) const {
+    call_(object_, first, n, positions, normals, colors, texcoords);
+  }
+
+ private:
+  void* object_;
+  void (*call_)(void*, std::size_t, std::size_t, glm::vec4*, glm::vec3*, glm::vec4*, glm::vec4*);
+};
 
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
 /// c.array_scratch.sequence holds the draw's element indices (UINT32_MAX for one that does

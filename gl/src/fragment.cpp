@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstring>
-#include <functional>
+#include <array>
 
 #include "gl/src/context.hpp"
 
@@ -27,7 +27,8 @@ float clamp01(float v) { return v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
 
 // Runs fn over ranges of the framebuffer's pixels, on the pipeline's threads when it has
 // them (a full-HD clear writes 18 MB).
-void for_pixels(GlContext& c, const std::function<void(std::size_t, std::size_t)>& fn) {
+template <class Fn>
+void for_pixels(GlContext& c, const Fn& fn) {
   std::size_t n = std::size_t(c.fb.width) * std::size_t(c.fb.height);
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   if (c.pipeline && n >= (1u << 16)) c.pipeline->parallel_for(n, 1u << 15, fn);
@@ -37,10 +38,8 @@ void for_pixels(GlContext& c, const std::function<void(std::size_t, std::size_t)
 // The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3).
 void clear_color(GlContext& c) {
   const auto& mask = c.raster.color_mask;
-  Framebuffer scratch;
-  scratch.color.resize(4);
-  scratch.clear_color(c.raster.clear_color);  // the core's float-to-byte rounding
-  const std::uint8_t* px = scratch.color.data();
+  const std::array<std::uint8_t, 4> bytes = Framebuffer::color_bytes(c.raster.clear_color);  // the core's rounding
+  const std::uint8_t* px = bytes.data();
   bool all = mask[0] && mask[1] && mask[2] && mask[3];
   if (all) {  // whole pixels: one 32-bit store each, vectorized
     std::uint32_t value;

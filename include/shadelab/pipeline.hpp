@@ -4,10 +4,12 @@
 // between calls besides the framebuffer it is given.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -34,6 +36,8 @@ struct Framebuffer {
 
   void resize(int w, int h);
   void clear_color(glm::vec4 rgba);
+  /// The RGBA8 bytes clear_color writes for `rgba`.
+  static std::array<std::uint8_t, 4> color_bytes(glm::vec4 rgba);
   void clear_depth(float d);
   void clear_stencil(std::uint8_t s);
   /// The colour buffer as an image, top row first.
@@ -175,12 +179,19 @@ class PipelineContext {
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that
   /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.
-  void parallel_for(std::size_t count, std::size_t grain,
-                    const std::function<void(std::size_t begin, std::size_t end)>& fn);
+  /// fn is called through a reference (nothing is copied or allocated).
+  template <class Fn>
+  void parallel_for(std::size_t count, std::size_t grain, Fn&& fn) {
+    using F = std::remove_reference_t<Fn>;
+    parallel_for_ref(count, grain, [](void* f, std::size_t b, std::size_t e) { (*static_cast<F*>(f))(b, e); },
+                     const_cast<void*>(static_cast<const void*>(&fn)));
+  }
   struct Impl;
   Impl& impl() { return *impl_; }
 
  private:
+  void parallel_for_ref(std::size_t count, std::size_t grain, void (*call)(void*, std::size_t, std::size_t),
+                        void* fn);
   std::unique_ptr<Impl> impl_;
 };
 

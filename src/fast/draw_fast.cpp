@@ -22,14 +22,14 @@ PipelineContext::~PipelineContext() = default;
 
 int PipelineContext::threads() const { return impl_->pool.size(); }
 
-void PipelineContext::parallel_for(std::size_t count, std::size_t grain,
-                                   const std::function<void(std::size_t, std::size_t)>& fn) {
+void PipelineContext::parallel_for_ref(std::size_t count, std::size_t grain,
+                                       void (*call)(void*, std::size_t, std::size_t), void* fn) {
   if (count == 0) return;
   grain = std::max<std::size_t>(grain, 1);
   std::size_t chunks = std::min<std::size_t>((count + grain - 1) / grain, 1u << 20);
   impl_->pool.run(int(chunks), [&](int c, int) {
     std::size_t begin = count * std::size_t(c) / chunks, end = count * std::size_t(c + 1) / chunks;
-    if (begin < end) fn(begin, end);
+    if (begin < end) call(fn, begin, end);
   });
 }
 

@@ -23,10 +23,13 @@ std::uint8_t to_unorm8(float c) {
 }
 }  // namespace
 
+std::array<std::uint8_t, 4> Framebuffer::color_bytes(glm::vec4 rgba) {
+  return {to_unorm8(rgba.r), to_unorm8(rgba.g), to_unorm8(rgba.b), to_unorm8(rgba.a)};
+}
+
 void Framebuffer::clear_color(glm::vec4 rgba) {
-  std::uint8_t px[4] = {to_unorm8(rgba.r), to_unorm8(rgba.g), to_unorm8(rgba.b),
-                        to_unorm8(rgba.a)};
-  for (std::size_t i = 0; i < color.size(); i += 4) std::memcpy(&color[i], px, 4);
+  const std::array<std::uint8_t, 4> px = color_bytes(rgba);
+  for (std::size_t i = 0; i < color.size(); i += 4) std::memcpy(&color[i], px.data(), 4);
 }
 
 void Framebuffer::clear_depth(float d) { std::fill(depth.begin(), depth.end(), std::clamp(d, 0.0f, 1.0f)); }
