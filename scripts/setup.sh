@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
   gnuplot-nox     # bench/run.sh plots
+  valgrind        # bench/instructions.sh: instructions per frame, steady on a noisy machine
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)
   clang libclang-rt-14-dev     # libFuzzer for fuzz/run.sh
 )
