@@ -168,8 +168,8 @@ HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
   const DB db;
   switch (p.kind) {
     case Plane::kConstant: return hn::Set(db, p.base);
-    case Plane::kLinear:
-      return hn::Add(hn::Add(hn::Set(db, p.base), hn::Mul(w.f0, hn::Set(db, p.d0))), hn::Mul(w.f1, hn::Set(db, p.d1)));
+    case Plane::kLinear:  // fused where the target has FMA: within the same few roundings
+      return hn::MulAdd(w.f1, hn::Set(db, p.d1), hn::MulAdd(w.f0, hn::Set(db, p.d0), hn::Set(db, p.base)));
     case Plane::kExact: break;
   }
   return exact_varying(t, w, p.k);
