@@ -186,16 +186,14 @@ struct TrianglePlanes {
 
 HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   const VaryingLayout& l = job.plan.layout;
+  out.ready = true;
   if (job.plan.phong) {
-    out.ready = true;
     for (int k = 0; k < 3; ++k) {
       out.phong[k] = plane_of(t, l.eye_position + k, nullptr);
       out.phong[3 + k] = plane_of(t, l.eye_normal + k, nullptr);
     }
     return;
   }
-  out.has_secondary = false;
-  out.ready = true;
   const int color = t.front ? l.front_color : l.back_color;
   const int secondary = t.front ? l.front_secondary : l.back_secondary;
   for (int c = 0; c < 4; ++c) out.color[c] = plane_of(t, color + c, t.flat);
