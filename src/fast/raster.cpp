@@ -35,7 +35,7 @@ struct BlockPixels {
   int copied[kRows];         // pixels of the row inside the framebuffer, when copied; else 0
 };
 
-void open_block(const DrawJob& job, int x, int y, bool interior, BlockPixels& g) {
+HWY_INLINE void open_block(const DrawJob& job, int x, int y, bool interior, BlockPixels& g) {
   Framebuffer& fb = *job.fb;
   const std::size_t width = std::size_t(fb.width);
   const std::size_t first = std::size_t(y) * width + std::size_t(x);
@@ -81,13 +81,19 @@ struct GroupCounts {
   std::uint64_t fragments = 0, shaded = 0;
 };
 
+// How a triangle's blocks are drawn: on the SIMD path, wholly inside the framebuffer (no
+// copies: the hot loop calls nothing, so its vectors stay in registers) or touching its right
+// or bottom edge; or fragment by fragment on the reference path.
+enum class Path { kInterior, kEdge, kScalar };
+
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour.
-void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, GroupCounts& counts,
-                int x, int y, bool interior, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB z) {
+template <Path kPath>
+HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, GroupCounts& counts,
+                           int x, int y, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB z) {
   const DF df;
   const FragmentState& fs = *job.frag;
   BlockPixels g;
-  open_block(job, x, y, interior, g);
+  open_block(job, x, y, kPath == Path::kInterior, g);
   unsigned passed = bits;
   if (fs.depth_test) {
     MB live = hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
@@ -102,7 +108,7 @@ void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, G
     Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
     write_colors(fs, color, passed, g.color);
   }
-  close_block(job, g);
+  if constexpr (kPath == Path::kEdge) close_block(job, g);
 }
 
 // Reference per-fragment operations for the covered lanes of one row (stencil, capture,
@@ -122,8 +128,9 @@ void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
-void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
-           GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
+template <Path kPath>
+HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
+                      GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
   const DD dd;
   const DF df;
   const int lanes = int(hn::Lanes(dd));
@@ -135,7 +142,7 @@ void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, Worker
     bits |= unsigned(cover) << (r * lanes);
   }
   if (!bits) return;
-  if (!interior) {  // lanes outside the framebuffer (the tile's pixels end there) are not drawn
+  if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {  // lanes outside the framebuffer (the tile's pixels end there) are not drawn
     const int valid = job.fb->width - x;
     if (valid < lanes) {
       unsigned row = (1u << valid) - 1u;
@@ -157,19 +164,19 @@ void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, Worker
     zr[r] = hn::DemoteTo(df, zd);
   }
   VB z = clamp_unit(hn::Add(join_rows(df, zr[0], zr[kRows - 1]), hn::Set(DB(), t.offset)));  // draw.cpp's emit
-  if (job.plan.scalar_fragments) {
+  if constexpr (kPath == Path::kScalar) {
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
-    return;
+  } else {
+    simd_block<kPath>(job, t, planes, counts, x, y, bits, b0, b1, z);
   }
-  simd_block(job, t, planes, counts, x, y, interior, bits, b0, b1, z);
 }
 
-void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+template <Path kPath>
+void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior) {
   const DD dd;
   const int lanes = int(hn::Lanes(dd));
-  if (job.plan.scalar_fragments) expand_triangle(job, t, ws);
   VD lane_step[3], group_step[3], thr[3];
   for (int e = 0; e < 3; ++e) {
     double a = double(-t.dy[e] * detail::kSubpixelOne);  // edge change one pixel right
@@ -181,8 +188,6 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   // the tile has no covered pixel, and rows past the framebuffer's bottom are masked.
   const int gx0 = t.x0 & ~(lanes - 1);
   const int gy0 = t.y0 & ~(kRows - 1);
-  const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
-                        (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
   TrianglePlanes planes;
   GroupCounts counts;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
@@ -199,7 +204,7 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       }
     }
     for (int x = gx0; x <= t.x1; x += lanes) {
-      block(job, t, planes, ws, counts, x, y, interior, e, thr);
+      block<kPath>(job, t, planes, ws, counts, x, y, interior, e, thr);
       for (int r = 0; r < kRows; ++r) {
         for (int k = 0; k < 3; ++k) e[r][k] = hn::Add(e[r][k], group_step[k]);
       }
@@ -207,6 +212,20 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   }
   ws.stats.fragments += counts.fragments;
   ws.stats.pixels_shaded += counts.shaded;
+}
+
+void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+  const int lanes = int(hn::Lanes(DD()));
+  const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
+                        (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
+  if (job.plan.scalar_fragments) {
+    expand_triangle(job, t, ws);
+    raster_path<Path::kScalar>(job, t, ws, interior);
+  } else if (interior) {
+    raster_path<Path::kInterior>(job, t, ws, true);
+  } else {
+    raster_path<Path::kEdge>(job, t, ws, false);
+  }
 }
 
 }  // namespace
