@@ -19,6 +19,16 @@ inline constexpr int kTileShift = 6;  ///< 64 x 64 pixel tiles
 inline constexpr int kTileSize = 1 << kTileShift;
 inline constexpr float kMinClipW = 1e-6f;  ///< clip.cpp's w >= epsilon plane
 
+/// The float just below 1/2 (1/2 - 2^-25). For every float s in [0, 255], trunc(s +
+/// kJustBelowHalf) is lround(s), half away from zero: where the sum is inexact, s is too far
+/// from any k + 1/2 for its rounding to cross an integer. The fragment path's 8-bit conversion
+/// (three operations instead of a rounding and a tie correction); tests/fast/unorm8_test.cpp
+/// checks every float in the range.
+inline constexpr float kJustBelowHalf = 0x1.fffffep-2f;
+
+/// 1/255 rounded to float: the fragment path's reciprocal for 8-bit channels read back.
+inline constexpr float kInv255 = 1.0f / 255.0f;
+
 /// The first and last pixel whose centre (x + 1/2) lies in [lo, hi], snapped coordinates: no
 /// pixel outside can be covered. The reference rasterizer scans a box one pixel wider on
 /// every side; its edge tests leave those pixels uncovered, so coverage is the same.

@@ -297,21 +297,13 @@ HWY_INLINE VB clamp_unit(VB v) {
   return hn::IfThenElseZero(hn::Gt(v, hn::Zero(db)), hi);
 }
 
-// lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane, without a
-// float-to-int conversion: s = v * 255 lies in [0, 255], so s + 2^23 holds s rounded to an
-// integer (half to even) in its low mantissa bits, exactly. lround rounds half away from zero,
-// which differs only where s is exactly r + 0.5 (r even): one is added there. Checked against
-// lround for every float in [0, 255].
+// lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane: s = v * 255,
+// then trunc(s + kJustBelowHalf) (draw_job.hpp), which is lround(s) for every float s in
+// [0, 255].
 HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
   const DB db;
-  const DUB dub;
-  const VB magic = hn::Set(db, 8388608.0f);
   VB s = hn::Mul(v, hn::Set(db, 255.0f));
-  VB y = hn::Add(s, magic);
-  VB r = hn::Sub(y, magic);
-  auto half_up = hn::RebindMask(dub, hn::Eq(hn::Sub(s, r), hn::Set(db, 0.5f)));
-  hn::Vec<DUB> bits = hn::Sub(hn::BitCast(dub, y), hn::BitCast(dub, magic));
-  return hn::Add(bits, hn::IfThenElseZero(half_up, hn::Set(dub, 1u)));
+  return hn::BitCast(DUB(), hn::ConvertTo(DIB(), hn::Add(s, hn::Set(db, kJustBelowHalf))));
 }
 
 HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
@@ -320,10 +312,24 @@ HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
   return hn::ConvertTo(DB(), hn::BitCast(DIB(), v));
 }
 
+/// x / 255 for integers x in [0, 255], correctly rounded as the reference's division. With
+/// fused multiply-adds: q = x * (1/255) is within an ulp; its residual x - 255 q is exact in
+/// one FMA, and q + residual / 255 rounds to the quotient (checked for all 256 values in
+/// tests/fast/unorm8_test.cpp). Without them, the division.
+HWY_INLINE VB byte_to_unit(VB x) {
+  const DB db;
+#if HWY_NATIVE_FMA
+  const VB r = hn::Set(db, kInv255);
+  const VB q = hn::Mul(x, r);
+  return hn::MulAdd(hn::NegMulAdd(q, hn::Set(db, 255.0f), x), r, q);
+#else
+  return hn::Div(x, hn::Set(db, 255.0f));
+#endif
+}
+
 /// fragment_ops.cpp's write_color for the lanes of a block set in `live`, at `rows`.
 HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
                              std::uint32_t* const rows[kRows]) {
-  const DB db;
   const DUB dub;
   Rgba out;
   for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
@@ -332,17 +338,20 @@ HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigne
   if (fs.blend.enabled) {
     const Rgba src = out;
     Rgba dst;
-    for (int c = 0; c < 4; ++c) dst.c[c] = hn::Div(channel(old, c), hn::Set(db, 255.0f));
+    for (int c = 0; c < 4; ++c) dst.c[c] = byte_to_unit(channel(old, c));
     if (fs.blend.src == BlendFactor::kSrcAlpha && fs.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
-      const VB a = src.c[3], one_minus_a = one_minus(src.c[3]);  // the usual transparency
+      // The usual transparency. Its result needs no clamp: with s, d, a in [0, 1], the
+      // rounded s a is at most a and d (1 - a) at most the rounded 1 - a, whose sum with a
+      // rounds to at most 1 (it exceeds 1 by under half an ulp of 1); nothing is negative
+      // or NaN.
+      const VB a = src.c[3], one_minus_a = one_minus(src.c[3]);
       for (int c = 0; c < 4; ++c) out.c[c] = hn::Add(hn::Mul(src.c[c], a), hn::Mul(dst.c[c], one_minus_a));
     } else {
       for (int c = 0; c < 4; ++c) {
-        out.c[c] = hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
-                           hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst)));
+        out.c[c] = clamp_unit(hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
+                                      hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst))));
       }
     }
-    for (VB& c : out.c) c = clamp_unit(c);
   }
   hn::Vec<DUB> packed;
   if (!masked) {
