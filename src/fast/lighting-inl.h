@@ -1,6 +1,7 @@
 // The OpenGL lighting equation (src/lighting/lighting.cpp) over SIMD lanes, one point per lane.
 // Every operation is the reference's float operation in the reference's order (no FMA), so
-// results are bitwise light_point's except the powers (exp(e log c) here, std::pow there).
+// results are bitwise light_point's except the powers (binary powering or exp(e log c) here,
+// std::pow there).
 // Per-target code: included by Highway dispatch units once per SIMD target.
 #if defined(SHADELAB_FAST_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SHADELAB_FAST_LIGHTING_INL_H_
@@ -8,6 +9,8 @@
 #else
 #define SHADELAB_FAST_LIGHTING_INL_H_
 #endif
+
+#include <bit>
 
 #include "fast/lighting_setup.hpp"
 #include "hwy/contrib/math/math-inl.h"
@@ -56,9 +59,22 @@ HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Ve
           hn::IfThenElse(ok, hn::Div(v.z, len), fallback.z)};
 }
 
-// c^e for c > 0 (other lanes are garbage and must be masked by the caller).
+// c^e for c > 0 (other lanes are garbage and must be masked by the caller). A whole exponent
+// from 1 to 128 (shininess and spot exponents usually are) by binary powering: at most 7
+// squarings and 7 products, each rounding once, so within about 2e-5 relative of the exact
+// power (std::pow), against some 45 operations for exp(e log c), which is there for the
+// others.
 template <class D>
 HWY_INLINE hn::Vec<D> pow_positive(D d, hn::Vec<D> c, float e) {
+  if (e >= 1.0f && e <= 128.0f && e == float(int(e))) {
+    const unsigned n = unsigned(e);
+    hn::Vec<D> power = c;  // c^(the bits of n above bit b), from the top bit down
+    for (int b = int(std::bit_width(n)) - 2; b >= 0; --b) {
+      power = hn::Mul(power, power);
+      if ((n >> b) & 1u) power = hn::Mul(power, c);
+    }
+    return power;
+  }
   return hn::Exp(d, hn::Mul(hn::Set(d, e), hn::Log(d, c)));
 }
 
