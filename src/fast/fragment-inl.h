@@ -302,8 +302,19 @@ HWY_INLINE VB clamp_unit(VB v) {
 // [0, 255].
 HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
   const DB db;
-  VB s = hn::Mul(v, hn::Set(db, 255.0f));
-  return hn::BitCast(DUB(), hn::ConvertTo(DIB(), hn::Add(s, hn::Set(db, kJustBelowHalf))));
+  const VB t = hn::Add(hn::Mul(v, hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf));
+  // t lies in [0, 256): the truncating conversion itself, without the fix-up ConvertTo adds
+  // for values that overflow an int32 (four more operations).
+#if HWY_TARGET <= HWY_AVX3
+  const hn::Vec<DIB> i{_mm512_cvttps_epi32(t.raw)};
+#elif HWY_TARGET == HWY_AVX2
+  const hn::Vec<DIB> i{_mm256_cvttps_epi32(t.raw)};
+#elif HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
+  const hn::Vec<DIB> i{_mm_cvttps_epi32(t.raw)};
+#else
+  const hn::Vec<DIB> i = hn::ConvertTo(DIB(), t);
+#endif
+  return hn::BitCast(DUB(), i);
 }
 
 HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
