@@ -304,11 +304,7 @@ HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& ds
 }
 
 // fragment_ops.cpp's unit(): v > 0 ? min(v, 1) : 0, so NaN becomes 0.
-HWY_INLINE VB clamp_unit(VB v) {
-  const DB db;
-  VB hi = hn::IfThenElse(hn::Lt(v, hn::Set(db, 1.0f)), v, hn::Set(db, 1.0f));
-  return hn::IfThenElseZero(hn::Gt(v, hn::Zero(db)), hi);
-}
+HWY_INLINE VB clamp_unit(VB v) { return clamp01(DB(), v); }
 
 // lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane: s = v * 255,
 // then trunc(s + kJustBelowHalf) (draw_job.hpp), which is lround(s) for every float s in

@@ -157,11 +157,17 @@ HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float a[3], const float b[3]) {
           hn::Mul(hn::Mul(s, hn::Set(d, a[2])), hn::Set(d, b[2]))};
 }
 
-// lighting.cpp's clamp01: x > 0 ? min(x, 1) : 0, so NaN becomes 0.
+// lighting.cpp's clamp01: x > 0 ? min(x, 1) : 0, so NaN and -0 become +0. On x86, Max is
+// maxps(x, 0), which returns its second operand, +0, where x is NaN or either zero: two
+// operations. Elsewhere Highway's Max may keep the NaN, so the comparisons.
 template <class D>
 HWY_INLINE hn::Vec<D> clamp01(D d, hn::Vec<D> x) {
+#if HWY_ARCH_X86 && HWY_TARGET != HWY_SCALAR && HWY_TARGET != HWY_EMU128
+  return hn::Min(hn::Max(x, hn::Zero(d)), hn::Set(d, 1.0f));
+#else
   hn::Vec<D> hi = hn::IfThenElse(hn::Lt(x, hn::Set(d, 1.0f)), x, hn::Set(d, 1.0f));
   return hn::IfThenElseZero(hn::Gt(x, hn::Zero(d)), hi);
+#endif
 }
 
 /// The whole equation for every lane: light_point(model, lights, material, {p, n}).
