@@ -1,12 +1,13 @@
 // SIMD fragment work for one block of pixels of one triangle: depth test,
 // perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
 // blending and the colour write. A block is two rows of as many pixels as the SIMD target has
-// double lanes (8 x 2 with AVX-512): coverage, depth and the perspective weights are computed
+// double lanes (8 x 2 with AVX-512): coverage, depth and the barycentric weights are computed
 // row by row in double lanes, exactly as the reference; the rest on one float vector holding
 // both rows. Depth, blending and the round-half-away conversion are the reference's
-// arithmetic lane by lane; varyings are interpolated in floats from the double weights (a few
-// float roundings from the reference's double sum), and lighting differs in its powers: the
-// differential tests hold colours within 1/255. Per-target code (Highway).
+// arithmetic lane by lane; the perspective weights and the varyings are computed in floats
+// (a few float roundings from the reference's doubles), and per-pixel lighting differs in its
+// powers and divisions: the differential tests hold colours within 1/255. Per-target code
+// (Highway).
 #if defined(SHADELAB_FAST_FRAGMENT_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SHADELAB_FAST_FRAGMENT_INL_H_
 #undef SHADELAB_FAST_FRAGMENT_INL_H_
@@ -102,43 +103,56 @@ HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const 
   }
 }
 
-/// Normalized perspective weights of each row of a block (reference_raster.inl's q0, q1, q2),
-/// and q0, q1 of the whole block in floats.
+/// A block's barycentric weights: b0, b1 of each row in doubles (exact_varying reads them),
+/// and the normalized perspective weights q0, q1 of the whole block in floats
+/// (reference_raster.inl's q0, q1: q_i = b_i / w_i, divided by their sum).
 struct Weights {
-  VD q0[kRows], q1[kRows], q2[kRows];
+  VD b0[kRows], b1[kRows];
   VB f0, f1;
 };
 
+/// The float weights: b0, b1 rounded to float, then (affine triangles aside) the perspective
+/// division in floats over the whole block: one float division where the reference's double
+/// arithmetic takes one per row. They differ from the reference's by a few float roundings,
+/// as the varyings computed from them already do (Plane).
 HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], const VD b1[kRows]) {
-  const DD dd;
-  Weights w;
-  for (int r = 0; r < kRows; ++r) {
-    VD b2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0[r]), b1[r]);
-    if (t.affine) {
-      w.q0[r] = b0[r], w.q1[r] = b1[r], w.q2[r] = b2;
-      continue;
-    }
-    VD q0 = hn::Mul(b0[r], hn::Set(dd, double(t.v[0]->inv_w)));
-    VD q1 = hn::Mul(b1[r], hn::Set(dd, double(t.v[1]->inv_w)));
-    VD q2 = hn::Mul(b2, hn::Set(dd, double(t.v[2]->inv_w)));
-    VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
-    w.q0[r] = hn::Mul(q0, inv), w.q1[r] = hn::Mul(q1, inv), w.q2[r] = hn::Mul(q2, inv);
-  }
   const DF df;
-  w.f0 = join_rows(df, hn::DemoteTo(df, w.q0[0]), hn::DemoteTo(df, w.q0[kRows - 1]));
-  w.f1 = join_rows(df, hn::DemoteTo(df, w.q1[0]), hn::DemoteTo(df, w.q1[kRows - 1]));
+  const DB db;
+  Weights w;
+  for (int r = 0; r < kRows; ++r) w.b0[r] = b0[r], w.b1[r] = b1[r];
+  const VB f0 = join_rows(df, hn::DemoteTo(df, b0[0]), hn::DemoteTo(df, b0[kRows - 1]));
+  const VB f1 = join_rows(df, hn::DemoteTo(df, b1[0]), hn::DemoteTo(df, b1[kRows - 1]));
+  if (t.affine) {
+    w.f0 = f0, w.f1 = f1;
+    return w;
+  }
+  const VB f2 = hn::Sub(hn::Sub(hn::Set(db, 1.0f), f0), f1);
+  const VB q0 = hn::Mul(f0, hn::Set(db, t.v[0]->inv_w));
+  const VB q1 = hn::Mul(f1, hn::Set(db, t.v[1]->inv_w));
+  const VB q2 = hn::Mul(f2, hn::Set(db, t.v[2]->inv_w));
+  const VB inv = hn::Div(hn::Set(db, 1.0f), hn::Add(hn::Add(q0, q1), q2));
+  w.f0 = hn::Mul(q0, inv), w.f1 = hn::Mul(q1, inv);
   return w;
 }
 
-/// Varying `k` at every lane, as the reference computes it: the weighted sum in doubles.
+/// Varying `k` at every lane, as the reference computes it: the perspective weights and the
+/// weighted sum in doubles.
 HWY_INLINE VB exact_varying(const TriSetup& t, const Weights& w, int k) {
   const DD dd;
   const DF df;
-  float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
+  const double a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
   VF rows[kRows];
   for (int r = 0; r < kRows; ++r) {
-    VD s = hn::Add(hn::Add(hn::Mul(w.q0[r], hn::Set(dd, double(a0))), hn::Mul(w.q1[r], hn::Set(dd, double(a1)))),
-                   hn::Mul(w.q2[r], hn::Set(dd, double(a2))));
+    VD q0 = w.b0[r], q1 = w.b1[r];
+    VD q2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), q0), q1);
+    if (!t.affine) {
+      q0 = hn::Mul(q0, hn::Set(dd, double(t.v[0]->inv_w)));
+      q1 = hn::Mul(q1, hn::Set(dd, double(t.v[1]->inv_w)));
+      q2 = hn::Mul(q2, hn::Set(dd, double(t.v[2]->inv_w)));
+      const VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
+      q0 = hn::Mul(q0, inv), q1 = hn::Mul(q1, inv), q2 = hn::Mul(q2, inv);
+    }
+    VD s = hn::Add(hn::Add(hn::Mul(q0, hn::Set(dd, a0)), hn::Mul(q1, hn::Set(dd, a1))), hn::Mul(q2, hn::Set(dd, a2)));
     rows[r] = hn::DemoteTo(df, s);
   }
   return join_rows(df, rows[0], rows[kRows - 1]);
