@@ -73,12 +73,17 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   int y0 = std::max(0, first_centre(min_y)), y1 = std::min(h - 1, last_centre(max_y));
   if (x0 > x1 || y0 > y1) return;
   int tx0 = x0 >> kTileShift, tx1 = x1 >> kTileShift, ty0 = y0 >> kTileShift, ty1 = y1 >> kTileShift;
+  if (tx0 == tx1 && ty0 == ty1) {  // most triangles of a big mesh: one tile, no edge tests
+    chunk.bins[std::size_t(ty0) * job.tiles_x + tx0].push_back(entry);
+    return;
+  }
   bool test_tiles = (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 2;
   // Edges of the counter-clockwise triangle and their thresholds (0 if owned, else 1).
   const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
   std::int64_t t[3];
+  constexpr int kFrom[3] = {1, 2, 0}, kTo[3] = {2, 0, 1};  // edge e: v[e + 1] -> v[e + 2]
   for (int e = 0; e < 3; ++e) {
-    const RasterVertex &p = *v[(e + 1) % 3], &q = *v[(e + 2) % 3];
+    const RasterVertex &p = *v[kFrom[e]], &q = *v[kTo[e]];
     t[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0 : 1;
   }
   for (int ty = ty0; ty <= ty1; ++ty) {

@@ -19,6 +19,7 @@ struct TriSetup {
   double inv_area;           ///< 1 / area (the reference's barycentric scale)
   bool affine;               ///< equal 1/w at the three vertices: no perspective division
   std::int64_t dx[3], dy[3];  ///< edge e runs from v[e+1] to v[e+2] (mod 3)
+  std::int64_t ox[3], oy[3];  ///< edge e's start, v[e+1]'s snapped position
   double threshold[3];        ///< coverage: edge value >= threshold (0 owned, 1 not)
   float offset;               ///< polygon offset added to depth
   int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
@@ -32,10 +33,9 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
 
 /// Edge e's value at the centre of pixel (x, y): exact, as the reference's edge_function.
 inline std::int64_t edge_at(const TriSetup& t, int e, int x, int y) {
-  const RasterVertex& p = *t.v[(e + 1) % 3];
   std::int64_t cx = std::int64_t(x) * detail::kSubpixelOne + detail::kSubpixelOne / 2;
   std::int64_t cy = std::int64_t(y) * detail::kSubpixelOne + detail::kSubpixelOne / 2;
-  return t.dx[e] * (cy - p.sy) - t.dy[e] * (cx - p.sx);
+  return t.dx[e] * (cy - t.oy[e]) - t.dy[e] * (cx - t.ox[e]);
 }
 
 /// Loads the triangle's three full reference attribute sets into ws.attribs (flat shading's
