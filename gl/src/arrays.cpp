@@ -113,7 +113,7 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
         normals[v] = usable(a.normal) ? glm::vec3(fetch(a.normal, first + v, glm::vec4(0.0f), true)) : now.normal;
       }
     }
-    for (std::size_t v = 0; v < n; ++v) {
+    for (std::size_t v = 0; colors && v < n; ++v) {
       colors[v] = usable(a.color) ? fetch(a.color, first + v, glm::vec4(0, 0, 0, 1), true) : now.color;
     }
     if (!texcoords) return;

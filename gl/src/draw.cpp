@@ -373,7 +373,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   // Object-space attributes of the range, then eye space in place.
   m.positions.resize(n);
   m.normals.resize(n);
-  m.colors.resize(n);
+  m.colors.resize(l.enabled ? 0 : n);  // lit: colours come from the lighting
   m.texcoords.resize(texture ? n : 0);
   m.raw_texcoords.resize(texture ? n : 0);
   m.finite.resize(n);
@@ -387,7 +387,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   std::atomic<bool> homogeneous{false};
   const bool small_projection = bounded(&projection[0][0], 16);
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
-    load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], &m.colors[begin],
+    load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], l.enabled ? nullptr : &m.colors[begin],
          texture ? &m.raw_texcoords[begin] : nullptr);
     for (std::size_t v = begin; v < end; ++v) {
       glm::vec4 eye = p.modelview * m.positions[v];
@@ -402,8 +402,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: vertices with w != 1 go
   // vertex by vertex (nothing is drawn yet).
   if (homogeneous && l.enabled) return false;
-  if (l.enabled) m.colors.clear();
-  else m.normals.clear();
+  if (!l.enabled) m.normals.clear();
   QuadSplit split = QuadSplit::kFromFirst;
   if (mode == GL_QUADS) {
     for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {

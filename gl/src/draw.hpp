@@ -28,8 +28,8 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position);
 void end_primitive(GlContext& c);
 
 /// Fills object-space attributes of array elements first .. first + n - 1: positions,
-/// normals, colours and (when `texcoords` is not null) texture coordinates, taking the
-/// current value where an array is disabled.
+/// normals and, when their pointers are not null, colours (unused under lighting) and
+/// texture coordinates, taking the current value where an array is disabled.
 /// Called through a reference to the caller's function object: nothing is copied or
 /// allocated per draw.
 class ElementLoader {
