@@ -77,16 +77,34 @@ HWY_INLINE unsigned row_bits(unsigned bits, int r) {
   return (bits >> (unsigned(r) * lanes)) & ((1u << lanes) - 1u);
 }
 
-HWY_INLINE MB block_mask(unsigned bits) {
-  std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
-  return hn::LoadMaskBits(DB(), bytes);
+// Masks from and to bits. AVX-512 masks are bit registers: taken as they are, without the
+// round trip through bytes in memory that LoadMaskBits / StoreMaskBits take.
+template <class D>
+HWY_INLINE hn::Mask<D> mask_of_bits(D d, unsigned bits) {
+#if HWY_TARGET <= HWY_AVX3
+  (void)d;
+  return hn::Mask<D>{static_cast<decltype(hn::Mask<D>().raw)>(bits)};
+#else
+  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
+  return hn::LoadMaskBits(d, bytes);
+#endif
 }
 
-HWY_INLINE unsigned block_bits(MB m) {
+HWY_INLINE MB block_mask(unsigned bits) { return mask_of_bits(DB(), bits); }
+
+template <class D>
+HWY_INLINE unsigned bits_of_mask(D d, hn::Mask<D> m) {
+#if HWY_TARGET <= HWY_AVX3
+  (void)d;
+  return unsigned(m.raw);
+#else
   std::uint8_t bytes[8] = {};
-  hn::StoreMaskBits(DB(), m, bytes);
+  hn::StoreMaskBits(d, m, bytes);
   return unsigned(bytes[0]) | unsigned(bytes[1]) << 8;
+#endif
 }
+
+HWY_INLINE unsigned block_bits(MB m) { return bits_of_mask(DB(), m); }
 
 /// The rows of a block from memory (each row's own address).
 template <class DH, typename T>
@@ -94,12 +112,18 @@ HWY_INLINE hn::Vec<Block<DH>> load_rows(DH dh, T* const rows[kRows]) {
   return join_rows(dh, hn::LoadU(dh, rows[0]), hn::LoadU(dh, rows[kRows - 1]));
 }
 
-/// Stores the lanes set in `bits` of each row.
+/// Stores the lanes set in `bits` of each row (whole rows when every lane is set: the
+/// interior of a triangle, without building masks).
 template <class DH, typename T>
 HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const rows[kRows]) {
+  constexpr unsigned kAll = (1u << (kRows * hn::MaxLanes(DD()))) - 1u;
+  if (bits == kAll && hn::Lanes(DD()) == hn::MaxLanes(DD())) {
+    for (int r = 0; r < kRows; ++r) hn::StoreU(row_of(dh, v, r), dh, rows[r]);
+    return;
+  }
   for (int r = 0; r < kRows; ++r) {
     std::uint8_t b = std::uint8_t(row_bits(bits, r));
-    if (b) hn::BlendedStore(row_of(dh, v, r), hn::LoadMaskBits(dh, &b), dh, rows[r]);
+    if (b) hn::BlendedStore(row_of(dh, v, r), mask_of_bits(dh, b), dh, rows[r]);
   }
 }
 

@@ -137,9 +137,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   unsigned bits = 0;
   for (int r = 0; r < kRows; ++r) {
     auto cov = hn::And(hn::And(hn::Ge(e[r][0], thr[0]), hn::Ge(e[r][1], thr[1])), hn::Ge(e[r][2], thr[2]));
-    std::uint8_t cover = 0;
-    hn::StoreMaskBits(dd, cov, &cover);
-    bits |= unsigned(cover) << (r * lanes);
+    bits |= bits_of_mask(dd, cov) << (r * lanes);
   }
   if (!bits) return;
   if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {  // lanes outside the framebuffer (the tile's pixels end there) are not drawn
