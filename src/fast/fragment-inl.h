@@ -268,13 +268,13 @@ template <class D>
 HWY_INLINE void phong_lanes(const DrawJob& job, const TriSetup& t, D d, const V3<D>& p, V3<D> n,
                             hn::Vec<D> out[4]) {
   V3<D> up{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
-  n = normalize_or<Divide::kPerPixel>(d, n, up, nullptr);
+  n = normalize_or<Form::kPerPixel>(d, n, up, nullptr);
   bool back = !t.front && job.plan.two_side;
   LitIn<D> in;
   in.p = p;
   in.n = back ? V3<D>{hn::Neg(n.x), hn::Neg(n.y), hn::Neg(n.z)} : n;
   const MaterialParams& m = back ? job.plan.lighting.back : job.plan.lighting.front;
-  LitOut<D> lit = light_lanes<Divide::kPerPixel>(d, job.plan.lighting, m, in);
+  LitOut<D> lit = light_lanes<Form::kPerPixel>(d, job.plan.lighting, m, in);
   out[0] = lit.primary.x;
   out[1] = lit.primary.y;
   out[2] = lit.primary.z;

@@ -48,22 +48,23 @@ HWY_INLINE V3<D> splat3(D d, const float v[3]) {
   return {hn::Set(d, v[0]), hn::Set(d, v[1]), hn::Set(d, v[2])};
 }
 
-/// How the equation divides. kReference: as lighting.cpp, bitwise (per-vertex lighting).
-/// kPerPixel: a vector is normalized by one reciprocal and three products instead of three
-/// divisions, within an ulp of the quotients (per-pixel Phong with 8 lights: 11% less time
-/// on AVX-512, shadelab_micro_bench). Zero, infinite and NaN lengths give the reference's
-/// results; only a subnormal length (|v| < 2^-126, whose reciprocal overflows) differs.
-/// Replacing the square root too (reciprocal square root estimate and a Newton step, with
-/// the clamps its edge cases need) measured no faster.
-enum class Divide { kReference, kPerPixel };
+/// How the equation is evaluated. kReference: as lighting.cpp, bitwise (per-vertex
+/// lighting). kPerPixel, within a few float roundings of it: a vector is normalized by one
+/// reciprocal and three products instead of three divisions (zero, infinite and NaN lengths
+/// give the reference's results; only a subnormal length, whose reciprocal overflows,
+/// differs); light x material colours are premultiplied per draw (LightParams::product); and
+/// Blinn's n . h for an infinite viewer is (n . L + n.z) / sqrt(2 + 2 L.z), without forming
+/// and normalizing h. A reciprocal square root estimate with a Newton step in place of the
+/// square root measured no faster.
+enum class Form { kReference, kPerPixel };
 
 // len > 0 ? v / len : fallback, with len = glm::length(v).
-template <Divide kDivide, class D>
+template <Form kForm, class D>
 HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Vec<D>* length) {
   hn::Vec<D> len = hn::Sqrt(dot3(v, v));
   auto ok = hn::Gt(len, hn::Zero(d));
   if (length) *length = len;
-  if constexpr (kDivide == Divide::kPerPixel) {
+  if constexpr (kForm == Form::kPerPixel) {
     const hn::Vec<D> inv = hn::Div(hn::Set(d, 1.0f), len);
     return {hn::IfThenElse(ok, hn::Mul(v.x, inv), fallback.x),
             hn::IfThenElse(ok, hn::Mul(v.y, inv), fallback.y),
@@ -108,10 +109,10 @@ HWY_INLINE hn::Vec<D> spot_lanes(D d, const LightParams& l, const V3<D>& to_ligh
 }
 
 // The specular cosine raised to the shininess (specular_factor in lighting.cpp).
-template <Divide kDivide, class D>
+template <Form kForm, class D>
 HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialParams& m,
                                      const V3<D>& n, const V3<D>& to_light, hn::Vec<D> n_dot_l,
-                                     const V3<D>& v) {
+                                     const V3<D>& v, bool infinite_viewer) {
   hn::Vec<D> c;
   if (m.phong_specular) {
     hn::Vec<D> two_ndl = hn::Mul(hn::Set(d, 2.0f), n_dot_l);
@@ -120,10 +121,16 @@ HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialPa
     c = dot3(r, v);
   } else if (l.const_half) {
     c = dot3(n, splat3(d, l.half));
+  } else if (kForm == Form::kPerPixel && infinite_viewer) {
+    // v = (0, 0, 1) and |L| = 1: n . (L + v) / |L + v| = (n.L + n.z) / sqrt(2 + 2 L.z), and
+    // 0 where L + v vanishes, as the reference's normalize_or.
+    const hn::Vec<D> h2 = hn::MulAdd(hn::Set(d, 2.0f), to_light.z, hn::Set(d, 2.0f));
+    const hn::Vec<D> ndh = hn::Div(hn::Add(n_dot_l, n.z), hn::Sqrt(h2));
+    c = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)), ndh);
   } else {
     V3<D> h{hn::Add(to_light.x, v.x), hn::Add(to_light.y, v.y), hn::Add(to_light.z, v.z)};
     V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
-    c = dot3(n, normalize_or<kDivide>(d, h, zero, nullptr));
+    c = dot3(n, normalize_or<kForm>(d, h, zero, nullptr));
   }
   auto positive = hn::Gt(c, hn::Zero(d));
   if (m.shininess == 0.0f) return hn::IfThenElseZero(positive, hn::Set(d, 1.0f));
@@ -131,7 +138,7 @@ HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialPa
 }
 
 // Direction to the light and attenuation * spot for one light.
-template <Divide kDivide, class D>
+template <Form kForm, class D>
 HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p, V3<D>& to_light) {
   if (!l.positional) {
     to_light = splat3(d, l.pos);
@@ -141,7 +148,7 @@ HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p,
               hn::Sub(hn::Set(d, l.pos[2]), p.z)};
   V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
   hn::Vec<D> dist;
-  to_light = normalize_or<kDivide>(d, delta, zero, &dist);
+  to_light = normalize_or<kForm>(d, delta, zero, &dist);
   hn::Vec<D> denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
                              hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
   hn::Vec<D> att = hn::IfThenElseZero(hn::Gt(denom, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), denom));
@@ -155,6 +162,12 @@ HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float a[3], const float b[3]) {
   return {hn::Mul(hn::Mul(s, hn::Set(d, a[0])), hn::Set(d, b[0])),
           hn::Mul(hn::Mul(s, hn::Set(d, a[1])), hn::Set(d, b[1])),
           hn::Mul(hn::Mul(s, hn::Set(d, a[2])), hn::Set(d, b[2]))};
+}
+
+// s * p[c] for the three channels (per-pixel lighting's premultiplied colours).
+template <class D>
+HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float p[3]) {
+  return {hn::Mul(s, hn::Set(d, p[0])), hn::Mul(s, hn::Set(d, p[1])), hn::Mul(s, hn::Set(d, p[2]))};
 }
 
 // lighting.cpp's clamp01: x > 0 ? min(x, 1) : 0, so NaN and -0 become +0. On x86, Max is
@@ -171,30 +184,37 @@ HWY_INLINE hn::Vec<D> clamp01(D d, hn::Vec<D> x) {
 }
 
 /// The whole equation for every lane: light_point(model, lights, material, {p, n}).
-template <Divide kDivide, class D>
+template <Form kForm, class D>
 HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialParams& m,
                                  const LitIn<D>& in) {
   V3<D> v{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
   if (s.local_viewer) {
     V3<D> minus_p{hn::Neg(in.p.x), hn::Neg(in.p.y), hn::Neg(in.p.z)};
-    v = normalize_or<kDivide>(d, minus_p, v, nullptr);
+    v = normalize_or<kForm>(d, minus_p, v, nullptr);
   }
   V3<D> primary = splat3(d, m.base);
   V3<D> spec{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
   for (const LightParams& l : s.lights) {
     V3<D> to_light;
-    hn::Vec<D> scale = light_direction<kDivide>(d, l, in.p, to_light);
+    hn::Vec<D> scale = light_direction<kForm>(d, l, in.p, to_light);
     hn::Vec<D> n_dot_l = dot3(in.n, to_light);
     // lighting.cpp: diffuse and specular only where n.L > 0 and attenuation * spot > 0.
     auto lit = hn::And(hn::Gt(n_dot_l, hn::Zero(d)), hn::Gt(scale, hn::Zero(d)));
-    V3<D> amb = scaled(d, scale, m.ambient, l.ambient);
-    V3<D> dif = scaled(d, hn::Mul(scale, n_dot_l), m.diffuse, l.diffuse);
+    V3<D> amb, dif;
+    if constexpr (kForm == Form::kPerPixel) {  // light x material premultiplied
+      amb = scaled(d, scale, l.product[m.side][0]);
+      dif = scaled(d, hn::Mul(scale, n_dot_l), l.product[m.side][1]);
+    } else {
+      amb = scaled(d, scale, m.ambient, l.ambient);
+      dif = scaled(d, hn::Mul(scale, n_dot_l), m.diffuse, l.diffuse);
+    }
     primary.x = hn::Add(primary.x, hn::Add(amb.x, hn::IfThenElseZero(lit, dif.x)));
     primary.y = hn::Add(primary.y, hn::Add(amb.y, hn::IfThenElseZero(lit, dif.y)));
     primary.z = hn::Add(primary.z, hn::Add(amb.z, hn::IfThenElseZero(lit, dif.z)));
     if (hn::AllFalse(d, lit)) continue;  // adding zeros changes nothing
-    hn::Vec<D> f = specular_lanes<kDivide>(d, l, m, in.n, to_light, n_dot_l, v);
-    V3<D> sp = scaled(d, hn::Mul(scale, f), m.specular, l.specular);
+    hn::Vec<D> f = specular_lanes<kForm>(d, l, m, in.n, to_light, n_dot_l, v, !s.local_viewer);
+    V3<D> sp = kForm == Form::kPerPixel ? scaled(d, hn::Mul(scale, f), l.product[m.side][2])
+                                            : scaled(d, hn::Mul(scale, f), m.specular, l.specular);
     spec.x = hn::Add(spec.x, hn::IfThenElseZero(lit, sp.x));
     spec.y = hn::Add(spec.y, hn::IfThenElseZero(lit, sp.y));
     spec.z = hn::Add(spec.z, hn::IfThenElseZero(lit, sp.z));

@@ -86,10 +86,17 @@ void make_lighting_setup(const LightModel& model, std::span<const Light> lights,
     put3(p.ambient, glm::vec3(light.ambient));
     put3(p.diffuse, glm::vec3(light.diffuse));
     put3(p.specular, glm::vec3(light.specular));
+    for (int side = 0; side < 2; ++side) {
+      const Material& m = side == 0 ? front : back;
+      put3(p.product[side][0], glm::vec3(m.ambient) * glm::vec3(light.ambient));
+      put3(p.product[side][1], glm::vec3(m.diffuse) * glm::vec3(light.diffuse));
+      put3(p.product[side][2], glm::vec3(m.specular) * glm::vec3(light.specular));
+    }
     out.lights.push_back(p);
   }
   out.front = material_params(model, front);
   out.back = material_params(model, back);
+  out.back.side = 1;
   out.local_viewer = model.local_viewer;
   out.separate_specular = model.separate_specular;
 }

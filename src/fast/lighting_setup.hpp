@@ -24,6 +24,9 @@ struct LightParams {
   bool const_half = false;       ///< directional light and infinite viewer: h is a constant
   float half[3] = {0, 0, 1};     ///< that constant, normalized (0 when l + v = 0)
   float ambient[3], diffuse[3], specular[3];
+  /// Light x material colours for per-pixel lighting, [front, back][ambient, diffuse,
+  /// specular][rgb]: material * light, rounded once (the reference scales first).
+  float product[2][3][3];
 };
 
 /// One material's constants.
@@ -33,6 +36,7 @@ struct MaterialParams {
   float alpha = 1;  ///< clamped diffuse alpha
   float shininess = 0;
   bool phong_specular = false;  ///< the lecture's r . v form instead of Blinn's n . h
+  int side = 0;                 ///< 0 front, 1 back: which of LightParams::product
 };
 
 struct LightingSetup {

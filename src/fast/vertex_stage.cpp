@@ -57,7 +57,7 @@ void light_batch(DrawJob& job, Batch& b, const MaterialParams& m, bool back, int
   auto sign = [&](const float* v) { return back ? hn::Neg(hn::Load(d, v)) : hn::Load(d, v); };
   LitIn<D> in{{hn::Load(d, b.x), hn::Load(d, b.y), hn::Load(d, b.z)},
                         {sign(b.nx), sign(b.ny), sign(b.nz)}};
-  LitOut<D> out = light_lanes<Divide::kReference>(d, job.plan.lighting, m, in);
+  LitOut<D> out = light_lanes<Form::kReference>(d, job.plan.lighting, m, in);
   hn::Store(out.primary.x, d, b.out[0]);
   hn::Store(out.primary.y, d, b.out[1]);
   hn::Store(out.primary.z, d, b.out[2]);
