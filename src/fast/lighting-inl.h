@@ -43,6 +43,12 @@ HWY_INLINE hn::Vec<D> dot3(const V3<D>& a, const V3<D>& b) {
   return hn::Add(hn::Add(hn::Mul(a.x, b.x), hn::Mul(a.y, b.y)), hn::Mul(a.z, b.z));
 }
 
+// The same in fused multiply-adds where the target has them (per-pixel lighting).
+template <class D>
+HWY_INLINE hn::Vec<D> dot3_fused(const V3<D>& a, const V3<D>& b) {
+  return hn::MulAdd(a.z, b.z, hn::MulAdd(a.y, b.y, hn::Mul(a.x, b.x)));
+}
+
 template <class D>
 HWY_INLINE V3<D> splat3(D d, const float v[3]) {
   return {hn::Set(d, v[0]), hn::Set(d, v[1]), hn::Set(d, v[2])};
@@ -54,14 +60,15 @@ HWY_INLINE V3<D> splat3(D d, const float v[3]) {
 /// give the reference's results; only a subnormal length, whose reciprocal overflows,
 /// differs); light x material colours are premultiplied per draw (LightParams::product); and
 /// Blinn's n . h for an infinite viewer is (n . L + n.z) / sqrt(2 + 2 L.z), without forming
-/// and normalizing h. A reciprocal square root estimate with a Newton step in place of the
+/// and normalizing h; dot products and the attenuation's polynomial are fused multiply-adds
+/// where the target has them. A reciprocal square root estimate with a Newton step in place of the
 /// square root measured no faster.
 enum class Form { kReference, kPerPixel };
 
 // len > 0 ? v / len : fallback, with len = glm::length(v).
 template <Form kForm, class D>
 HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Vec<D>* length) {
-  hn::Vec<D> len = hn::Sqrt(dot3(v, v));
+  hn::Vec<D> len = hn::Sqrt(kForm == Form::kPerPixel ? dot3_fused(v, v) : dot3(v, v));
   auto ok = hn::Gt(len, hn::Zero(d));
   if (length) *length = len;
   if constexpr (kForm == Form::kPerPixel) {
@@ -149,8 +156,13 @@ HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p,
   V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
   hn::Vec<D> dist;
   to_light = normalize_or<kForm>(d, delta, zero, &dist);
-  hn::Vec<D> denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
-                             hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
+  hn::Vec<D> denom;
+  if constexpr (kForm == Form::kPerPixel) {  // kc + (kl + kq dist) dist, fused
+    denom = hn::MulAdd(hn::MulAdd(hn::Set(d, l.kq), dist, hn::Set(d, l.kl)), dist, hn::Set(d, l.kc));
+  } else {
+    denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
+                    hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
+  }
   hn::Vec<D> att = hn::IfThenElseZero(hn::Gt(denom, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), denom));
   if (!l.spot) return att;
   return hn::Mul(att, spot_lanes(d, l, to_light));
@@ -197,7 +209,7 @@ HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialPara
   for (const LightParams& l : s.lights) {
     V3<D> to_light;
     hn::Vec<D> scale = light_direction<kForm>(d, l, in.p, to_light);
-    hn::Vec<D> n_dot_l = dot3(in.n, to_light);
+    hn::Vec<D> n_dot_l = kForm == Form::kPerPixel ? dot3_fused(in.n, to_light) : dot3(in.n, to_light);
     // lighting.cpp: diffuse and specular only where n.L > 0 and attenuation * spot > 0.
     auto lit = hn::And(hn::Gt(n_dot_l, hn::Zero(d)), hn::Gt(scale, hn::Zero(d)));
     V3<D> amb, dif;
