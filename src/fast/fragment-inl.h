@@ -186,31 +186,35 @@ HWY_INLINE VB exact_varying(const TriSetup& t, const Weights& w, int k) {
 /// q1 (a1 - a2) in floats. The reference's double sum q0 a0 + q1 a1 + q2 a2 differs from it
 /// by a few float roundings of the largest |a| (q0 + q1 + q2 = 1), far below the 1/255 of a
 /// colour step. A value equal at the three vertices (and flat shading's provoking value) has
-/// zero differences, so the sum is that value exactly, as the reference's rounds back to
-/// it; non-finite values take the reference's own arithmetic.
+/// zero differences, so the sum is that value exactly (the weights of a covered pixel are
+/// finite), as the reference's rounds back to it. A triangle with a non-finite value or
+/// difference takes the reference's own arithmetic for all its varyings (exact_varying).
 struct Plane {
   float base, d0, d1;
-  bool exact;
-  int k;
+  int k;  // the varying
 };
 
-HWY_INLINE Plane plane_of(const TriSetup& t, int k, const float* flat) {
-  if (flat) return {flat[k], 0.0f, 0.0f, false, k};
-  const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
-  if (a0 == a1 && a1 == a2) return {a2, 0.0f, 0.0f, false, k};
-  if (!(std::isfinite(a0) && std::isfinite(a1) && std::isfinite(a2))) return {a2, 0.0f, 0.0f, true, k};
-  return {a2, a0 - a2, a1 - a2, false, k};
+// Sets up planes[i] for varyings first + i; false where some value or difference is not
+// finite. (x * 0 is 0 for finite x and NaN otherwise; a NaN makes the sum NaN.)
+template <int N>
+HWY_INLINE bool set_up(const TriSetup& t, int first, const float* flat, Plane (&planes)[N]) {
+  if (flat) {
+    for (int i = 0; i < N; ++i) planes[i] = {flat[first + i], 0.0f, 0.0f, first + i};
+    return true;
+  }
+  float probe = 0.0f;
+  for (int i = 0; i < N; ++i) {
+    const float a0 = t.var[0][first + i], a1 = t.var[1][first + i], a2 = t.var[2][first + i];
+    planes[i] = {a2, a0 - a2, a1 - a2, first + i};
+    probe += (a2 * 0.0f + planes[i].d0 * 0.0f) + planes[i].d1 * 0.0f;
+  }
+  return probe == 0.0f;
 }
 
-// Fused where the target has FMA: within the same few roundings. (The weights of a covered
-// pixel are finite, so zero differences add exactly nothing.)
+// Fused where the target has FMA: within the same few roundings.
 HWY_INLINE VB linear_varying(const Weights& w, const Plane& p) {
   const DB db;
   return hn::MulAdd(w.f1, hn::Set(db, p.d1), hn::MulAdd(w.f0, hn::Set(db, p.d0), hn::Set(db, p.base)));
-}
-
-HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
-  return p.exact ? exact_varying(t, w, p.k) : linear_varying(w, p);
 }
 
 /// The varyings a triangle's fragments read: its colours (primary, then secondary when
@@ -218,31 +222,29 @@ HWY_INLINE VB varying(const TriSetup& t, const Weights& w, const Plane& p) {
 struct TrianglePlanes {
   Plane color[4], secondary[3];
   bool has_secondary;
-  Plane phong[6];
-  bool any_exact;      // some plane needs the reference's arithmetic
+  Plane position[3], normal[3];
+  bool exact;          // the reference's arithmetic for every varying (a non-finite one)
   bool ready = false;  // set up at the first fragment that passes its tests
 };
+
+HWY_INLINE VB varying(const TriSetup& t, const TrianglePlanes& planes, const Weights& w, const Plane& p) {
+  return planes.exact ? exact_varying(t, w, p.k) : linear_varying(w, p);
+}
 
 HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   const VaryingLayout& l = job.plan.layout;
   out.ready = true;
-  out.any_exact = false;
   if (job.plan.phong) {
-    for (int k = 0; k < 3; ++k) {
-      out.phong[k] = plane_of(t, l.eye_position + k, nullptr);
-      out.phong[3 + k] = plane_of(t, l.eye_normal + k, nullptr);
-    }
-    for (const Plane& p : out.phong) out.any_exact |= p.exact;
+    const bool finite_position = set_up(t, l.eye_position, nullptr, out.position);
+    const bool finite_normal = set_up(t, l.eye_normal, nullptr, out.normal);
+    out.exact = !(finite_position && finite_normal);
     return;
   }
   const int color = t.front ? l.front_color : l.back_color;
   const int secondary = t.front ? l.front_secondary : l.back_secondary;
-  for (int c = 0; c < 4; ++c) out.color[c] = plane_of(t, color + c, t.flat);
-  for (const Plane& p : out.color) out.any_exact |= p.exact;
+  out.exact = !set_up(t, color, t.flat, out.color);
   out.has_secondary = secondary >= 0;
-  if (!out.has_secondary) return;
-  for (int c = 0; c < 3; ++c) out.secondary[c] = plane_of(t, secondary + c, t.flat);
-  for (const Plane& p : out.secondary) out.any_exact |= p.exact;
+  if (out.has_secondary && !set_up(t, secondary, t.flat, out.secondary)) out.exact = true;
 }
 
 struct Rgba {
@@ -252,13 +254,13 @@ struct Rgba {
 // Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp).
 HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w) {
   Rgba out;
-  if (!planes.any_exact && !planes.has_secondary) {  // the usual case, without branches
+  if (!planes.exact && !planes.has_secondary) {  // the usual case, without branches
     for (int c = 0; c < 4; ++c) out.c[c] = linear_varying(w, planes.color[c]);
     return out;
   }
-  for (int c = 0; c < 4; ++c) out.c[c] = varying(t, w, planes.color[c]);
+  for (int c = 0; c < 4; ++c) out.c[c] = varying(t, planes, w, planes.color[c]);
   if (!planes.has_secondary) return out;
-  for (int c = 0; c < 3; ++c) out.c[c] = hn::Add(out.c[c], varying(t, w, planes.secondary[c]));
+  for (int c = 0; c < 3; ++c) out.c[c] = hn::Add(out.c[c], varying(t, planes, w, planes.secondary[c]));
   return out;
 }
 
@@ -290,10 +292,9 @@ HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Triangl
                             const Weights& w) {
   const DB db;
   VB v[6];
-  if (planes.any_exact) {
-    for (int k = 0; k < 6; ++k) v[k] = varying(t, w, planes.phong[k]);
-  } else {
-    for (int k = 0; k < 6; ++k) v[k] = linear_varying(w, planes.phong[k]);
+  for (int k = 0; k < 3; ++k) {
+    v[k] = varying(t, planes, w, planes.position[k]);
+    v[3 + k] = varying(t, planes, w, planes.normal[k]);
   }
   Rgba out;
   phong_lanes(job, t, db, V3<DB>{v[0], v[1], v[2]}, V3<DB>{v[3], v[4], v[5]}, out.c);
