@@ -19,6 +19,7 @@
 #include <glm/vec4.hpp>
 
 #include "gl/src/primitive.hpp"
+#include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
 #include "shadelab/material.hpp"
 #include "shadelab/pipeline.hpp"
@@ -187,9 +188,10 @@ struct ArrayScratch {
 /// draw_triangles call, kept across primitives so that drawing allocates nothing once they
 /// have grown.
 struct ImmediateScratch {
-  std::vector<glm::vec4> positions, colors, back_colors;
-  std::vector<glm::vec3> normals, secondary, back_secondary;
-  std::vector<glm::vec2> texcoords;
+  // Every element is written after each resize (Batch::set): growing costs no zeroing.
+  detail::ScratchVector<glm::vec4> positions, colors, back_colors;
+  detail::ScratchVector<glm::vec3> normals, secondary, back_secondary;
+  detail::ScratchVector<glm::vec2> texcoords;
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
   std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite

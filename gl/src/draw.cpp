@@ -4,12 +4,12 @@
 // Fragment work (clipping, rasterization, texturing, blending) is the core pipeline's.
 #include "gl/src/draw.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
-
-#include <algorithm>
-#include <cmath>
+#include <span>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -209,7 +209,7 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const std::vector<PrimitiveVe
 
 // Marks the window-space bounds of the batch's vertices (the whole viewport when a vertex
 // is behind the eye, as clipping may then reach any part of it).
-void mark_batch(GlContext& c, const glm::mat4& projection, const std::vector<glm::vec4>& eye) {
+void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::vec4> eye) {
   const Viewport& vp = c.raster.viewport;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const glm::vec4& e : eye) {

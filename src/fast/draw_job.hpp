@@ -11,6 +11,7 @@
 
 #include "fast/lighting_setup.hpp"
 #include "pipeline/stages.hpp"
+#include "shadelab/detail/default_init.hpp"
 #include "shadelab/pipeline.hpp"
 
 namespace shadelab::fast {
@@ -108,9 +109,10 @@ struct DrawJob {
   Viewport viewport;
   DrawPlan plan;
   // Vertex stage output, one entry per input vertex.
-  std::vector<RasterVertex> vertices;
-  std::vector<float> varyings;       ///< layout.count floats per vertex
-  std::vector<std::uint8_t> outcodes;  ///< bit k: outside clip plane k (clip.cpp's order)
+  // Written in full for every vertex by the vertex stage: resizing zeroes nothing.
+  detail::ScratchVector<RasterVertex> vertices;
+  detail::ScratchVector<float> varyings;       ///< layout.count floats per vertex
+  detail::ScratchVector<std::uint8_t> outcodes;  ///< bit k: outside clip plane k (clip.cpp's order)
   // Setup output.
   std::vector<SetupChunk> chunks;
   int chunk_count = 0;
