@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # shadelab against Mesa on the same programs, on this machine (docs/performance.md).
 #
-#   bench/run.sh [--frames N] [--quick] [--no-softpipe] [--no-sweeps] [--out DIR]
+#   bench/run.sh [--frames N] [--rounds R] [--quick] [--no-softpipe] [--no-sweeps] [--out DIR]
 #
 # Builds the benchmark programs into build/, then runs each scene in turn with Mesa's
 # llvmpipe, Mesa's softpipe and libshadelab-gl (the same GL 1.x source, bench/gl_bench.c), and
@@ -10,11 +10,15 @@
 # pair of images agrees within the conformance bar, then sweeps triangle count, resolution and
 # thread count, writing CSV files and, with gnuplot, PNG plots into the output folder
 # (default out/bench). Timings are medians of N frames (default 10) after 2 warm-up frames.
+# With --rounds R (default 1), each scene runs R times, llvmpipe and shadelab alternating:
+# the table shows the median of each side's R medians and the median of the R ratios, which
+# a shared machine's bursts of load move far less than a single pair.
 # SHADELAB_BUILD_DIR chooses the build folder (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 frames=10
+rounds=1
 softpipe=1
 sweeps=1
 quick=0
@@ -22,11 +26,12 @@ out=out/bench
 while [ $# -gt 0 ]; do
   case "$1" in
     --frames) frames="$2"; shift 2 ;;
+    --rounds) rounds="$2"; shift 2 ;;
     --quick) quick=1; shift ;;
     --no-softpipe) softpipe=0; shift ;;
     --no-sweeps) sweeps=0; shift ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -47,9 +52,25 @@ median() { "$@" | sed -n 's/.*median_ms=\([0-9.]*\).*/\1/p'; }
 llvmpipe() { GALLIUM_DRIVER=llvmpipe "$@"; }
 softpipe_run() { GALLIUM_DRIVER=softpipe "$@"; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "-" }'; }
+# The median of its arguments.
+median_of() { printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { printf "%s", (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+# paired MESA_COMMAND -- SHADELAB_COMMAND: runs the pair `rounds` times, alternating, and sets
+# l, m (the medians of their frame-time medians) and r (the median of the rounds' ratios).
+paired() {
+  local mesa=() ours=() ls=() ms=() rs=() a b k
+  while [ "$1" != -- ]; do mesa+=("$1"); shift; done
+  shift
+  ours=("$@")
+  for ((k = 0; k < rounds; ++k)); do
+    a=$(median "${mesa[@]}")
+    b=$(median "${ours[@]}")
+    ls+=("$a"); ms+=("$b"); rs+=("$(ratio "$b" "$a")")
+  done
+  l=$(median_of "${ls[@]}"); m=$(median_of "${ms[@]}"); r=$(median_of "${rs[@]}")
+}
 
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $cores cores; Mesa: $(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo '?')"
-echo "frames: median of $frames after 2 warm-up frames, 1920x1080"
+echo "frames: median of $frames after 2 warm-up frames, 1920x1080; $rounds round(s) per scene, alternating"
 printf '\n%-34s %12s %12s %12s %16s  %s\n' scene "llvmpipe ms" "softpipe ms" "shadelab ms" "shadelab/llvmpipe" "images"
 csv="$out/scenes.csv"
 echo "scene,llvmpipe_ms,softpipe_ms,shadelab_ms,ratio" > "$csv"
@@ -57,26 +78,26 @@ big_triangles=1000000
 [ "$quick" = 1 ] && big_triangles=100000
 run_scene() {  # label, then the arguments of bench_gl_*
   local label="$1"; shift
-  local l s=- m agree
-  l=$(median llvmpipe $B/bench_gl_mesa "$@" --frames "$frames" --png "$out/$label.mesa.png")
+  local l s=- m r agree
+  paired llvmpipe $B/bench_gl_mesa "$@" --frames "$frames" --png "$out/$label.mesa.png" -- \
+    $B/bench_gl_shadelab "$@" --frames "$frames" --png "$out/$label.shadelab.png"
   if [ "$softpipe" = 1 ]; then
     s=$(median softpipe_run $B/bench_gl_mesa "$@" --frames 3 --warmup 0)
   fi
-  m=$(median $B/bench_gl_shadelab "$@" --frames "$frames" --png "$out/$label.shadelab.png")
   agree=$($build/tests/gl-conformance/gl_compare "$out/$label.mesa.png" "$out/$label.shadelab.png" \
             --name "$label" --diff "$out/$label.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
-  printf '%-34s %12s %12s %12s %16s  %s\n' "$label" "$l" "$s" "$m" "$(ratio "$m" "$l")" "$agree"
-  echo "$label,$l,$s,$m,$(ratio "$m" "$l")" >> "$csv"
+  printf '%-34s %12s %12s %12s %16s  %s\n' "$label" "$l" "$s" "$m" "$r" "$agree"
+  echo "$label,$l,$s,$m,$r" >> "$csv"
 }
 run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
 run_scene "b-shiny-teapot" teapot
 run_scene "c-fill-wall-2-layers" fill
-l=$(median llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png")
-m=$(median $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png")
+paired llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png" -- \
+  $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png"
 agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.png" "$out/d-phong.shadelab.png" \
           --name d-phong --diff "$out/d-phong.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
-printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$(ratio "$m" "$l")" "$agree"
-echo "d-phong-8-lights,$l,-,$m,$(ratio "$m" "$l")" >> "$csv"
+printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$r" "$agree"
+echo "d-phong-8-lights,$l,-,$m,$r" >> "$csv"
 
 [ "$sweeps" = 1 ] || exit 0
 
