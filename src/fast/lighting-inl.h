@@ -55,7 +55,11 @@ HWY_INLINE V3<D> splat3(D d, const float v[3]) {
 }
 
 /// How the equation is evaluated. kReference: as lighting.cpp, bitwise (per-vertex
-/// lighting). kPerPixel, within a few float roundings of it: a vector is normalized by one
+/// lighting: the equation switches terms on and off, the specular term where n . L turns
+/// positive and spot lights at their cone's edge, and a vertex there must fall on the
+/// reference's side, since a Gouraud triangle spreads that vertex's colour over many pixels;
+/// evaluated per vertex with kPerPixel, the Lok Yau Hall figure, whose dull specular is
+/// large at its sphere's terminator, differed by 3/255 over ten pixels). kPerPixel, within a few float roundings of it: a vector is normalized by one
 /// reciprocal and three products instead of three divisions (zero, infinite and NaN lengths
 /// give the reference's results; only a subnormal length, whose reciprocal overflows,
 /// differs); light x material colours are premultiplied per draw (LightParams::product); and
