@@ -38,6 +38,10 @@ inline int first_centre(std::int64_t lo) {
 }
 inline int last_centre(std::int64_t hi) { return int((hi - detail::kSubpixelOne / 2) >> detail::kSubpixelBits); }
 
+/// Edge e of a counter-clockwise triangle runs from vertex kEdgeFrom[e] to kEdgeTo[e]
+/// (v[e + 1] to v[e + 2], mod 3), as the reference's edge functions w0, w1, w2.
+inline constexpr int kEdgeFrom[3] = {1, 2, 0}, kEdgeTo[3] = {2, 0, 1};
+
 /// A vertex after the viewport transform, as setup and the rasterizer read it. Values are
 /// the reference's to_window results bit for bit; sx, sy are snap()'s.
 struct RasterVertex {

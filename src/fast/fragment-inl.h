@@ -176,7 +176,8 @@ HWY_INLINE VB exact_varying(const TriSetup& t, const Weights& w, int k) {
       const VD inv = hn::Div(hn::Set(dd, 1.0), hn::Add(hn::Add(q0, q1), q2));
       q0 = hn::Mul(q0, inv), q1 = hn::Mul(q1, inv), q2 = hn::Mul(q2, inv);
     }
-    VD s = hn::Add(hn::Add(hn::Mul(q0, hn::Set(dd, a0)), hn::Mul(q1, hn::Set(dd, a1))), hn::Mul(q2, hn::Set(dd, a2)));
+    VD s = hn::Add(hn::Add(hn::Mul(q0, hn::Set(dd, a0)), hn::Mul(q1, hn::Set(dd, a1))),
+                   hn::Mul(q2, hn::Set(dd, a2)));
     rows[r] = hn::DemoteTo(df, s);
   }
   return join_rows(df, rows[0], rows[kRows - 1]);

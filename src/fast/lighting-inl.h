@@ -1,7 +1,8 @@
 // The OpenGL lighting equation (src/lighting/lighting.cpp) over SIMD lanes, one point per lane.
-// Every operation is the reference's float operation in the reference's order (no FMA), so
-// results are bitwise light_point's except the powers (binary powering or exp(e log c) here,
-// std::pow there).
+// In its reference form (per-vertex lighting) every operation is the reference's float
+// operation in the reference's order (no FMA), so results are bitwise light_point's except the
+// powers (binary powering or exp(e log c) here, std::pow there); the per-pixel form is cheaper
+// and within a few roundings of it (Form).
 // Per-target code: included by Highway dispatch units once per SIMD target.
 #if defined(SHADELAB_FAST_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SHADELAB_FAST_LIGHTING_INL_H_
@@ -54,19 +55,22 @@ HWY_INLINE V3<D> splat3(D d, const float v[3]) {
   return {hn::Set(d, v[0]), hn::Set(d, v[1]), hn::Set(d, v[2])};
 }
 
-/// How the equation is evaluated. kReference: as lighting.cpp, bitwise (per-vertex
-/// lighting: the equation switches terms on and off, the specular term where n . L turns
-/// positive and spot lights at their cone's edge, and a vertex there must fall on the
-/// reference's side, since a Gouraud triangle spreads that vertex's colour over many pixels;
-/// evaluated per vertex with kPerPixel, the Lok Yau Hall figure, whose dull specular is
-/// large at its sphere's terminator, differed by 3/255 over ten pixels). kPerPixel, within a few float roundings of it: a vector is normalized by one
-/// reciprocal and three products instead of three divisions (zero, infinite and NaN lengths
-/// give the reference's results; only a subnormal length, whose reciprocal overflows,
-/// differs); light x material colours are premultiplied per draw (LightParams::product); and
-/// Blinn's n . h for an infinite viewer is (n . L + n.z) / sqrt(2 + 2 L.z), without forming
-/// and normalizing h; dot products and the attenuation's polynomial are fused multiply-adds
-/// where the target has them. A reciprocal square root estimate with a Newton step in place of the
-/// square root measured no faster.
+/// How the equation is evaluated.
+/// - kReference (per-vertex lighting): as lighting.cpp, bitwise but for the powers. The
+///   equation switches terms on and off (the specular term where n . L turns positive, spot
+///   lights at their cone's edge), and a vertex there must fall on the reference's side,
+///   since a Gouraud triangle spreads its colour over many pixels: evaluated per vertex in
+///   the kPerPixel form, the Lok Yau Hall figure, whose dull specular is large at its
+///   sphere's terminator, differed by 3/255 over ten pixels.
+/// - kPerPixel (per-pixel Phong), within a few float roundings of it: a vector is normalized
+///   by one reciprocal and three products instead of three divisions (zero, infinite and NaN
+///   lengths give the reference's results; only a subnormal length, whose reciprocal
+///   overflows, differs); light x material colours are premultiplied per draw
+///   (LightParams::product); Blinn's n . h for an infinite viewer is
+///   (n . L + n.z) / sqrt(2 + 2 L.z), without forming and normalizing h; dot products and
+///   the attenuation's polynomial are fused multiply-adds where the target has them. A
+///   reciprocal square root estimate with a Newton step in place of the square root measured
+///   no faster.
 enum class Form { kReference, kPerPixel };
 
 // len > 0 ? v / len : fallback, with len = glm::length(v).
@@ -229,8 +233,10 @@ HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialPara
     primary.z = hn::Add(primary.z, hn::Add(amb.z, hn::IfThenElseZero(lit, dif.z)));
     if (hn::AllFalse(d, lit)) continue;  // adding zeros changes nothing
     hn::Vec<D> f = specular_lanes<kForm>(d, l, m, in.n, to_light, n_dot_l, v, !s.local_viewer);
-    V3<D> sp = kForm == Form::kPerPixel ? scaled(d, hn::Mul(scale, f), l.product[m.side][2])
-                                            : scaled(d, hn::Mul(scale, f), m.specular, l.specular);
+    const hn::Vec<D> spec_scale = hn::Mul(scale, f);
+    V3<D> sp;
+    if constexpr (kForm == Form::kPerPixel) sp = scaled(d, spec_scale, l.product[m.side][2]);
+    else sp = scaled(d, spec_scale, m.specular, l.specular);
     spec.x = hn::Add(spec.x, hn::IfThenElseZero(lit, sp.x));
     spec.y = hn::Add(spec.y, hn::IfThenElseZero(lit, sp.y));
     spec.z = hn::Add(spec.z, hn::IfThenElseZero(lit, sp.z));

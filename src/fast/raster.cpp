@@ -140,7 +140,8 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     bits |= bits_of_mask(dd, cov) << (r * lanes);
   }
   if (!bits) return;
-  if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {  // lanes outside the framebuffer (the tile's pixels end there) are not drawn
+  // Lanes outside the framebuffer (the tile's pixels end there) are not drawn.
+  if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {
     const int valid = job.fb->width - x;
     if (valid < lanes) {
       unsigned row = (1u << valid) - 1u;

@@ -81,9 +81,8 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   // Edges of the counter-clockwise triangle and their thresholds (0 if owned, else 1).
   const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
   std::int64_t t[3];
-  constexpr int kFrom[3] = {1, 2, 0}, kTo[3] = {2, 0, 1};  // edge e: v[e + 1] -> v[e + 2]
   for (int e = 0; e < 3; ++e) {
-    const RasterVertex &p = *v[kFrom[e]], &q = *v[kTo[e]];
+    const RasterVertex &p = *v[kEdgeFrom[e]], &q = *v[kEdgeTo[e]];
     t[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0 : 1;
   }
   for (int ty = ty0; ty <= ty1; ++ty) {

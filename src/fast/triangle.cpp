@@ -69,9 +69,8 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   t.inv_area = 1.0 / double(t.area);
   t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
   if (!pixel_box(job, tx, ty, t)) return false;
-  constexpr int kFrom[3] = {1, 2, 0}, kTo[3] = {2, 0, 1};  // edge e: v[e + 1] -> v[e + 2]
   for (int e = 0; e < 3; ++e) {
-    const RasterVertex &p = *t.v[kFrom[e]], &q = *t.v[kTo[e]];
+    const RasterVertex &p = *t.v[kEdgeFrom[e]], &q = *t.v[kEdgeTo[e]];
     t.ox[e] = p.sx, t.oy[e] = p.sy;
     t.dx[e] = std::int64_t(q.sx) - p.sx;
     t.dy[e] = std::int64_t(q.sy) - p.sy;
