@@ -135,8 +135,15 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
 
   auto t1 = fast::Clock::now();
   fast::setup_stage(impl);
-  impl.pool.run(int(impl.tiles.size()), [&](int i, int worker) {
-    fast::raster_tile(job, impl.tiles[std::size_t(i)], impl.workers[std::size_t(worker)]);
+  // Tiles are claimed alternately from the first and the second half of the list, so that
+  // threads do not draw side by side: the framebuffer's rows need not start on a cache line
+  // (a vector's storage is 16-byte aligned), so two tiles next to each other share a line in
+  // every row, and two threads writing them pass those lines back and forth (the full-screen
+  // Gouraud fill ran no faster on two threads than on one, claiming tiles in order).
+  const std::size_t tiles = impl.tiles.size(), half = (tiles + 1) / 2;
+  impl.pool.run(int(tiles), [&](int i, int worker) {
+    const std::size_t k = (std::size_t(i) % 2) * half + std::size_t(i) / 2;
+    fast::raster_tile(job, impl.tiles[k], impl.workers[std::size_t(worker)]);
   });
   for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(stats, job.chunks[std::size_t(c)].stats);
   for (const fast::WorkerScratch& w : impl.workers) fast::add_counts(stats, w.stats);
