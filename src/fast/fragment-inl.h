@@ -15,7 +15,6 @@
 #define SHADELAB_FAST_FRAGMENT_INL_H_
 #endif
 
-#include <cmath>
 #include <cstdint>
 
 #include "fast/lighting-inl.h"
