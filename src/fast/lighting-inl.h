@@ -94,15 +94,28 @@ HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Ve
 // from 1 to 128 (shininess and spot exponents usually are) by binary powering: at most 7
 // squarings and 7 products, each rounding once, so within about 2e-5 relative of the exact
 // power (std::pow), against some 45 operations for exp(e log c), which is there for the
-// others.
+// others. The squarings are unrolled from the exponent's top bit down: each bit's test is a
+// branch of its own, taken the same way for a whole draw (in a loop, one branch taking the
+// exponent's bits in turn was mispredicted often enough to cost a tenth of per-pixel
+// lighting's time).
 template <class D>
 HWY_INLINE hn::Vec<D> pow_positive(D d, hn::Vec<D> c, float e) {
   if (e >= 1.0f && e <= 128.0f && e == float(int(e))) {
     const unsigned n = unsigned(e);
     hn::Vec<D> power = c;  // c^(the bits of n above bit b), from the top bit down
-    for (int b = int(std::bit_width(n)) - 2; b >= 0; --b) {
+    auto step = [&](int b) {
       power = hn::Mul(power, power);
       if ((n >> b) & 1u) power = hn::Mul(power, c);
+    };
+    switch (std::bit_width(n)) {  // 1 to 8
+      case 8: step(6); [[fallthrough]];
+      case 7: step(5); [[fallthrough]];
+      case 6: step(4); [[fallthrough]];
+      case 5: step(3); [[fallthrough]];
+      case 4: step(2); [[fallthrough]];
+      case 3: step(1); [[fallthrough]];
+      case 2: step(0); [[fallthrough]];
+      default: break;
     }
     return power;
   }
@@ -203,10 +216,81 @@ HWY_INLINE hn::Vec<D> clamp01(D d, hn::Vec<D> x) {
 #endif
 }
 
+// Per-pixel lighting (Form::kPerPixel), arranged for fewer vector operations: the kernel is
+// bound by their number, not by the divider's latency (lighting two independent blocks per
+// light took twice as long as one). For a positional light, n . L is (n . d) / |d| with
+// d = position - p, without normalizing d (the other components of L only where a spot, the
+// Phong specular or a local viewer needs them); each term is accumulated by fused
+// multiply-adds of the light x material products, with the lit test folded into its scale;
+// and a light whose ambient product is black adds no ambient term (the reference adds
+// scale x 0, which differs only where the scale is infinite: a light at the lit point without
+// constant attenuation).
+template <class D>
+HWY_INLINE LitOut<D> light_per_pixel(D d, const LightingSetup& s, const MaterialParams& m, const LitIn<D>& in) {
+  using V = hn::Vec<D>;
+  const V zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+  V3<D> v{zero, zero, one};
+  if (s.local_viewer) {
+    V3<D> minus_p{hn::Neg(in.p.x), hn::Neg(in.p.y), hn::Neg(in.p.z)};
+    v = normalize_or<Form::kPerPixel>(d, minus_p, v, nullptr);
+  }
+  V3<D> primary = splat3(d, m.base);
+  V3<D> spec{zero, zero, zero};
+  for (const LightParams& l : s.lights) {
+    const float(&product)[3][3] = l.product[m.side];
+    V scale, n_dot_l;
+    V3<D> to_light;
+    if (l.positional) {
+      const V3<D> delta{hn::Sub(hn::Set(d, l.pos[0]), in.p.x), hn::Sub(hn::Set(d, l.pos[1]), in.p.y),
+                        hn::Sub(hn::Set(d, l.pos[2]), in.p.z)};
+      const V dist = hn::Sqrt(dot3_fused(delta, delta));
+      const V inv = hn::IfThenElseZero(hn::Gt(dist, zero), hn::Div(one, dist));  // L = 0 at d = 0
+      const V denom = hn::MulAdd(hn::MulAdd(hn::Set(d, l.kq), dist, hn::Set(d, l.kl)), dist, hn::Set(d, l.kc));
+      scale = hn::IfThenElseZero(hn::Gt(denom, zero), hn::Div(one, denom));
+      n_dot_l = hn::Mul(dot3_fused(in.n, delta), inv);
+      if (l.spot || m.phong_specular || s.local_viewer) {
+        to_light = {hn::Mul(delta.x, inv), hn::Mul(delta.y, inv), hn::Mul(delta.z, inv)};
+        if (l.spot) scale = hn::Mul(scale, spot_lanes(d, l, to_light));
+      } else {  // Blinn's infinite-viewer form reads L.z only
+        to_light = {zero, zero, hn::Mul(delta.z, inv)};
+      }
+    } else {
+      to_light = splat3(d, l.pos);
+      scale = hn::Set(d, l.const_spot);
+      n_dot_l = dot3_fused(in.n, to_light);
+    }
+    // lighting.cpp: diffuse and specular only where n.L > 0 and attenuation * spot > 0.
+    const auto lit = hn::And(hn::Gt(n_dot_l, zero), hn::Gt(scale, zero));
+    if (l.ambient_product[m.side]) {
+      primary.x = hn::MulAdd(scale, hn::Set(d, product[0][0]), primary.x);
+      primary.y = hn::MulAdd(scale, hn::Set(d, product[0][1]), primary.y);
+      primary.z = hn::MulAdd(scale, hn::Set(d, product[0][2]), primary.z);
+    }
+    const V diffuse = hn::IfThenElseZero(lit, hn::Mul(scale, n_dot_l));
+    primary.x = hn::MulAdd(diffuse, hn::Set(d, product[1][0]), primary.x);
+    primary.y = hn::MulAdd(diffuse, hn::Set(d, product[1][1]), primary.y);
+    primary.z = hn::MulAdd(diffuse, hn::Set(d, product[1][2]), primary.z);
+    if (hn::AllFalse(d, lit)) continue;  // adding zeros changes nothing
+    const V f = specular_lanes<Form::kPerPixel>(d, l, m, in.n, to_light, n_dot_l, v, !s.local_viewer);
+    const V specular = hn::IfThenElseZero(lit, hn::Mul(scale, f));
+    spec.x = hn::MulAdd(specular, hn::Set(d, product[2][0]), spec.x);
+    spec.y = hn::MulAdd(specular, hn::Set(d, product[2][1]), spec.y);
+    spec.z = hn::MulAdd(specular, hn::Set(d, product[2][2]), spec.z);
+  }
+  if (!s.separate_specular) {
+    return {{clamp01(d, hn::Add(primary.x, spec.x)), clamp01(d, hn::Add(primary.y, spec.y)),
+             clamp01(d, hn::Add(primary.z, spec.z))},
+            {zero, zero, zero}};
+  }
+  return {{clamp01(d, primary.x), clamp01(d, primary.y), clamp01(d, primary.z)},
+          {clamp01(d, spec.x), clamp01(d, spec.y), clamp01(d, spec.z)}};
+}
+
 /// The whole equation for every lane: light_point(model, lights, material, {p, n}).
 template <Form kForm, class D>
 HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialParams& m,
                                  const LitIn<D>& in) {
+  if constexpr (kForm == Form::kPerPixel) return light_per_pixel(d, s, m, in);
   V3<D> v{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
   if (s.local_viewer) {
     V3<D> minus_p{hn::Neg(in.p.x), hn::Neg(in.p.y), hn::Neg(in.p.z)};

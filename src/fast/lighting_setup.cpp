@@ -91,6 +91,8 @@ void make_lighting_setup(const LightModel& model, std::span<const Light> lights,
       put3(p.product[side][0], glm::vec3(m.ambient) * glm::vec3(light.ambient));
       put3(p.product[side][1], glm::vec3(m.diffuse) * glm::vec3(light.diffuse));
       put3(p.product[side][2], glm::vec3(m.specular) * glm::vec3(light.specular));
+      const float* a = p.product[side][0];
+      p.ambient_product[side] = !(a[0] == 0.0f && a[1] == 0.0f && a[2] == 0.0f);
     }
     out.lights.push_back(p);
   }

@@ -27,6 +27,7 @@ struct LightParams {
   /// Light x material colours for per-pixel lighting, [front, back][ambient, diffuse,
   /// specular][rgb]: material * light, rounded once (the reference scales first).
   float product[2][3][3];
+  bool ambient_product[2];  ///< [front, back]: product[side][0] is not black
 };
 
 /// One material's constants.
