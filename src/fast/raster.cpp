@@ -40,6 +40,7 @@ HWY_INLINE void open_block(const DrawJob& job, int x, int y, bool interior, Bloc
   const std::size_t width = std::size_t(fb.width);
   const std::size_t first = std::size_t(y) * width + std::size_t(x);
   if (interior) {  // every row inside the framebuffer
+    #pragma GCC unroll 4
     for (int r = 0; r < kRows; ++r) {
       const std::size_t index = first + std::size_t(r) * width;
       g.depth[r] = job.frag->depth_test ? &fb.depth[index] : nullptr;
@@ -50,6 +51,7 @@ HWY_INLINE void open_block(const DrawJob& job, int x, int y, bool interior, Bloc
   }
   const int lanes = int(hn::Lanes(DD()));
   const int valid = std::min(fb.width - x, lanes);
+  #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     const bool inside = y + r < fb.height;
     g.index[r] = inside ? first + std::size_t(r) * width : 0;
@@ -68,6 +70,7 @@ HWY_INLINE void open_block(const DrawJob& job, int x, int y, bool interior, Bloc
 }
 
 void close_block(const DrawJob& job, const BlockPixels& g) {
+  #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     const std::size_t n = std::size_t(g.copied[r]);
     if (!n) continue;
@@ -135,6 +138,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   const DF df;
   const int lanes = int(hn::Lanes(dd));
   unsigned bits = 0;
+  #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     auto cov = hn::And(hn::And(hn::Ge(e[r][0], thr[0]), hn::Ge(e[r][1], thr[1])), hn::Ge(e[r][2], thr[2]));
     bits |= bits_of_mask(dd, cov) << (r * lanes);
@@ -155,6 +159,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   const VD inv_area = hn::Set(dd, t.inv_area);
   VD b0[kRows], b1[kRows];
   VF zr[kRows];
+  #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     b0[r] = hn::Mul(e[r][0], inv_area), b1[r] = hn::Mul(e[r][1], inv_area);
     VD b2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0[r]), b1[r]);
@@ -164,6 +169,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   }
   VB z = clamp_unit(hn::Add(join_rows(df, zr[0], zr[kRows - 1]), hn::Set(DB(), t.offset)));  // draw.cpp's emit
   if constexpr (kPath == Path::kScalar) {
+    #pragma GCC unroll 4
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
@@ -177,6 +183,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   const DD dd;
   const int lanes = int(hn::Lanes(dd));
   VD lane_step[3], group_step[3], thr[3];
+  #pragma GCC unroll 4
   for (int e = 0; e < 3; ++e) {
     double a = double(-t.dy[e] * detail::kSubpixelOne);  // edge change one pixel right
     lane_step[e] = hn::Mul(hn::Iota(dd, 0.0), hn::Set(dd, a));
@@ -190,13 +197,16 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   TrianglePlanes planes;
   GroupCounts counts;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
+  #pragma GCC unroll 4
   for (int k = 0; k < 3; ++k) {
     row_start[k] = edge_at(t, k, gx0, gy0);
     row_step[k] = t.dx[k] * detail::kSubpixelOne;
   }
   for (int y = gy0; y <= t.y1; y += kRows) {
     VD e[kRows][3];
+    #pragma GCC unroll 4
     for (int r = 0; r < kRows; ++r) {
+      #pragma GCC unroll 4
       for (int k = 0; k < 3; ++k) {
         e[r][k] = hn::Add(hn::Set(dd, double(row_start[k])), lane_step[k]);
         row_start[k] += row_step[k];
@@ -204,7 +214,9 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
     }
     for (int x = gx0; x <= t.x1; x += lanes) {
       block<kPath>(job, t, planes, ws, counts, x, y, interior, e, thr);
+      #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
+        #pragma GCC unroll 4
         for (int k = 0; k < 3; ++k) e[r][k] = hn::Add(e[r][k], group_step[k]);
       }
     }
