@@ -1,13 +1,13 @@
 // SIMD fragment work for one block of pixels of one triangle: depth test,
 // perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
 // blending and the colour write. A block is two rows of as many pixels as the SIMD target has
-// double lanes (8 x 2 with AVX-512): coverage, depth and the barycentric weights are computed
-// row by row in double lanes, exactly as the reference; the rest on one float vector holding
-// both rows. Depth, blending and the round-half-away conversion are the reference's
-// arithmetic lane by lane; the perspective weights and the varyings are computed in floats
-// (a few float roundings from the reference's doubles), and per-pixel lighting differs in its
-// powers and divisions: the differential tests hold colours within 1/255. Per-target code
-// (Highway).
+// double lanes (8 x 2 with AVX-512): coverage and the barycentric weights are computed row by
+// row in double lanes, exactly as the reference; the rest on one float vector holding both
+// rows. Depth (the reference's float plane), blending and the round-half-away conversion are
+// the reference's arithmetic lane by lane; the perspective weights and the varyings are
+// computed in floats (a few float roundings from the reference's doubles), and per-pixel
+// lighting differs in its powers and divisions: the differential tests hold colours within
+// 1/255. Per-target code (Highway).
 //
 // The small loops over a block's rows, colour channels and edges carry `#pragma GCC unroll`
 // here and in raster.cpp: left as loops, GCC kept their arrays of vectors (Rgba, the edge
@@ -148,18 +148,17 @@ struct Weights {
   VB f0, f1;
 };
 
-/// The float weights: b0, b1 rounded to float, then (affine triangles aside) the perspective
-/// division in floats over the whole block: one float division where the reference's double
-/// arithmetic takes one per row. They differ from the reference's by a few float roundings,
-/// as the varyings computed from them already do (Plane).
-HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], const VD b1[kRows]) {
-  const DF df;
+/// The float weights: b0, b1 rounded to float (f0, f1, which depth also reads), then (affine
+/// triangles aside) the perspective division in floats over the whole block: one float
+/// division where the reference's double arithmetic takes one per row. They differ from the
+/// reference's by a few float roundings, as the varyings computed from them already do
+/// (Plane).
+HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], const VD b1[kRows], VB f0,
+                                       VB f1) {
   const DB db;
   Weights w;
   #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) w.b0[r] = b0[r], w.b1[r] = b1[r];
-  const VB f0 = join_rows(df, hn::DemoteTo(df, b0[0]), hn::DemoteTo(df, b0[kRows - 1]));
-  const VB f1 = join_rows(df, hn::DemoteTo(df, b1[0]), hn::DemoteTo(df, b1[kRows - 1]));
   if (t.affine) {
     w.f0 = f0, w.f1 = f1;
     return w;

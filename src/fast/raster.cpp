@@ -1,7 +1,7 @@
 // The fast rasterizer: one tile at a time, every binned triangle in submission order, in
 // blocks of two rows of as many pixels as the SIMD target has double lanes. Edge functions are
 // exact integers held in doubles (below 2^53), so coverage is the reference's; depth is its
-// double arithmetic.
+// float plane (reference_raster.inl's plane_depth) over the whole block.
 // Compiled once per SIMD target (Highway), chosen at run time.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "fast/raster.cpp"
@@ -92,7 +92,8 @@ enum class Path { kInterior, kEdge, kScalar };
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour.
 template <Path kPath>
 HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, GroupCounts& counts,
-                           int x, int y, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB z) {
+                           int x, int y, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB f0, VB f1,
+                           VB z) {
   const DF df;
   const FragmentState& fs = *job.frag;
   BlockPixels g;
@@ -107,7 +108,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
     if (!planes.ready) set_up_planes(job, t, planes);
-    Weights w = perspective_weights(t, b0, b1);
+    Weights w = perspective_weights(t, b0, b1, f0, f1);
     Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
     write_colors(fs, color, passed, g.color);
   }
@@ -129,7 +130,7 @@ void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
   }
 }
 
-// Coverage, then depth (reference_raster.inl: b = w * (1 / area), b2 = 1 - b0 - b1, z = sum b z),
+// Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
 template <Path kPath>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
@@ -158,23 +159,22 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   }
   const VD inv_area = hn::Set(dd, t.inv_area);
   VD b0[kRows], b1[kRows];
-  VF zr[kRows];
   #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) {
-    b0[r] = hn::Mul(e[r][0], inv_area), b1[r] = hn::Mul(e[r][1], inv_area);
-    VD b2 = hn::Sub(hn::Sub(hn::Set(dd, 1.0), b0[r]), b1[r]);
-    VD zd = hn::Add(hn::Add(hn::Mul(b0[r], hn::Set(dd, double(t.v[0]->z))), hn::Mul(b1[r], hn::Set(dd, double(t.v[1]->z)))),
-                    hn::Mul(b2, hn::Set(dd, double(t.v[2]->z))));
-    zr[r] = hn::DemoteTo(df, zd);
-  }
-  VB z = clamp_unit(hn::Add(join_rows(df, zr[0], zr[kRows - 1]), hn::Set(DB(), t.offset)));  // draw.cpp's emit
+  for (int r = 0; r < kRows; ++r) b0[r] = hn::Mul(e[r][0], inv_area), b1[r] = hn::Mul(e[r][1], inv_area);
+  // The weights in floats, and depth from them as reference_raster.inl's plane_depth.
+  const DB db;
+  const VB f0 = join_rows(df, hn::DemoteTo(df, b0[0]), hn::DemoteTo(df, b0[kRows - 1]));
+  const VB f1 = join_rows(df, hn::DemoteTo(df, b1[0]), hn::DemoteTo(df, b1[kRows - 1]));
+  const VB plane = hn::Add(hn::Add(hn::Set(db, t.depth.base), hn::Mul(f0, hn::Set(db, t.depth.d0))),
+                           hn::Mul(f1, hn::Set(db, t.depth.d1)));
+  VB z = clamp_unit(hn::Add(plane, hn::Set(db, t.offset)));  // draw.cpp's emit
   if constexpr (kPath == Path::kScalar) {
     #pragma GCC unroll 4
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
   } else {
-    simd_block<kPath>(job, t, planes, counts, x, y, bits, b0, b1, z);
+    simd_block<kPath>(job, t, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   }
 }
 

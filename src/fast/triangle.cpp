@@ -69,6 +69,7 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   t.inv_area = 1.0 / double(t.area);
   t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
   if (!pixel_box(job, tx, ty, t)) return false;
+  t.depth = detail::depth_plane(t.v[0]->z, t.v[1]->z, t.v[2]->z);
   for (int e = 0; e < 3; ++e) {
     const RasterVertex &p = *t.v[kEdgeFrom[e]], &q = *t.v[kEdgeTo[e]];
     t.ox[e] = p.sx, t.oy[e] = p.sy;

@@ -21,6 +21,7 @@ struct TriSetup {
   std::int64_t dx[3], dy[3];  ///< edge e runs from v[e+1] to v[e+2] (mod 3)
   std::int64_t ox[3], oy[3];  ///< edge e's start, v[e+1]'s snapped position
   double threshold[3];        ///< coverage: edge value >= threshold (0 owned, 1 not)
+  detail::DepthPlane depth;   ///< window depth from the screen-space weights (the reference's)
   float offset;               ///< polygon offset added to depth
   int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
   std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
