@@ -82,8 +82,8 @@ int main(int argc, char** argv) {
   std::vector<double> times;
   for (int f = -warmup; f < frames; ++f) {
     auto t0 = std::chrono::steady_clock::now();
-    fb.clear_color({0.1f, 0.1f, 0.12f, 1.0f});
-    fb.clear_depth(1.0f);
+    fb.clear_color({0.1f, 0.1f, 0.12f, 1.0f}, &context);
+    fb.clear_depth(1.0f, &context);
     draw_triangles(fb, projection, vp, frag, shade, in, nullptr, &context);
     double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (f >= 0) times.push_back(ms);

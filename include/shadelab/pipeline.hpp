@@ -25,6 +25,8 @@
 
 namespace shadelab {
 
+class PipelineContext;
+
 /// Colour, depth and stencil in OpenGL window space: row 0 is the BOTTOM row.
 struct Framebuffer {
   int width = 0;
@@ -34,10 +36,12 @@ struct Framebuffer {
   std::vector<std::uint8_t> stencil;
 
   void resize(int w, int h);
-  void clear_color(glm::vec4 rgba);
+  /// Clears are split over `threads`' threads when given (a full-HD frame is 16 MB of colour
+  /// and depth).
+  void clear_color(glm::vec4 rgba, PipelineContext* threads = nullptr);
   /// The RGBA8 bytes clear_color writes for `rgba`.
   static std::array<std::uint8_t, 4> color_bytes(glm::vec4 rgba);
-  void clear_depth(float d);
+  void clear_depth(float d, PipelineContext* threads = nullptr);
   void clear_stencil(std::uint8_t s);
   /// The colour buffer as an image, top row first.
   Image to_image() const;

@@ -27,12 +27,29 @@ std::array<std::uint8_t, 4> Framebuffer::color_bytes(glm::vec4 rgba) {
   return {to_unorm8(rgba.r), to_unorm8(rgba.g), to_unorm8(rgba.b), to_unorm8(rgba.a)};
 }
 
-void Framebuffer::clear_color(glm::vec4 rgba) {
-  const std::array<std::uint8_t, 4> px = color_bytes(rgba);
-  for (std::size_t i = 0; i < color.size(); i += 4) std::memcpy(&color[i], px.data(), 4);
+namespace {
+
+// fill(begin, end) over [0, count), on the context's threads for large buffers.
+template <class Fill>
+void in_ranges(std::size_t count, PipelineContext* threads, const Fill& fill) {
+  if (threads && count >= (1u << 16)) threads->parallel_for(count, 1u << 15, fill);
+  else fill(0, count);
 }
 
-void Framebuffer::clear_depth(float d) { std::fill(depth.begin(), depth.end(), std::clamp(d, 0.0f, 1.0f)); }
+}  // namespace
+
+void Framebuffer::clear_color(glm::vec4 rgba, PipelineContext* threads) {
+  const std::array<std::uint8_t, 4> px = color_bytes(rgba);
+  std::uint32_t value;
+  std::memcpy(&value, px.data(), 4);
+  std::uint32_t* pixels = reinterpret_cast<std::uint32_t*>(color.data());
+  in_ranges(color.size() / 4, threads, [&](std::size_t b, std::size_t e) { std::fill(pixels + b, pixels + e, value); });
+}
+
+void Framebuffer::clear_depth(float d, PipelineContext* threads) {
+  const float value = std::clamp(d, 0.0f, 1.0f);
+  in_ranges(depth.size(), threads, [&](std::size_t b, std::size_t e) { std::fill(&depth[b], &depth[b] + (e - b), value); });
+}
 
 void Framebuffer::clear_stencil(std::uint8_t s) { std::fill(stencil.begin(), stencil.end(), s); }
 

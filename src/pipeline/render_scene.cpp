@@ -213,7 +213,7 @@ Image render_scene(const Scene& scene, const RenderOptions& requested, RenderSta
   int n = grid_size(options.samples.value_or(scene.samples));
   Framebuffer fb;
   fb.resize(scene.width * n, scene.height * n);
-  fb.clear_color(scene.background);
+  fb.clear_color(scene.background, options.context);
   glm::mat4 view = scene.camera.view_matrix();
   glm::mat4 projection =
       scene.camera.projection_matrix(float(scene.width) / float(std::max(scene.height, 1)));
