@@ -6,6 +6,7 @@
 
 #include <GL/gl.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -206,10 +207,19 @@ struct UserBuffer {
   GLenum format = GL_RGBA;
 };
 
-/// A rectangle of the framebuffer not yet copied to the caller's buffer.
-struct DirtyRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // [x0, x1) x [y0, y1)
-  bool empty() const { return x0 >= x1 || y0 >= y1; }
+/// What the GL layer knows of each tile of the framebuffer (the fast pipeline's squares of
+/// PipelineContext::kTileSize pixels, present.cpp): whether it changed since its last copy
+/// into the caller's buffer, and whether it holds nothing but the colour or depth of the last
+/// glClear, which a glClear with the same value can then leave as it is. Most frames clear
+/// the whole buffer and draw into a part of it: the rest is neither cleared again nor copied.
+struct TileMap {
+  static constexpr std::uint8_t kChanged = 1, kColorClear = 2, kDepthClear = 4;
+  int columns = 0, rows = 0;
+  std::vector<std::uint8_t> flags;  // per tile, row by row from pixel (0, 0)
+  std::uint32_t clear_color = 0;    // the pixel of kColorClear tiles (RGBA8 bytes)
+  float clear_depth = 0.0f;         // the depth of kDepthClear tiles
+  std::vector<int> list;            // scratch: the tiles an operation visits
+  std::vector<int> runs;            // scratch: for_listed_tiles' runs of neighbouring tiles
 };
 
 struct GlContext {
@@ -242,7 +252,7 @@ struct GlContext {
   std::unique_ptr<PipelineContext> pipeline;
   bool use_reference = false;
   UserBuffer user;
-  DirtyRect dirty;
+  TileMap tiles;
   bool ever_current = false;  // the first OSMesaMakeCurrent sets the viewport
   std::vector<std::uint8_t> depth_export;  // OSMesaGetDepthBuffer's copy
   bool depth_exported = false;
@@ -285,12 +295,45 @@ void outside_begin_end(F&& f) noexcept {
   });
 }
 
-/// Copies the dirty part of the framebuffer into the caller's buffer (present.cpp).
+/// Copies the tiles changed since the last copy into the caller's buffer (present.cpp).
 void present(GlContext& c);
+/// Sizes the tile map for the framebuffer: nothing changed, nothing known cleared.
+void reset_tiles(GlContext& c);
 /// Refreshes `depth_export` from the framebuffer's depth (and stencil) in Mesa's layout.
 void export_depth(GlContext& c);
-/// Marks a window-space rectangle as changed (clamped to the framebuffer).
+/// Marks the tiles a window-space rectangle touches as changed, colour and depth alike.
 void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1);
+/// After a draw_triangles through c.pipeline: marks the tiles it may have written (those
+/// the pipeline names) as changed.
+void mark_drawn(GlContext& c);
+/// Every tile to be copied again at the next present (the caller's buffer layout changed).
+void mark_all_changed(GlContext& c);
+/// Runs fn(x0, y0, x1, y1) over pixel rectangles [x0, x1) x [y0, y1) that together cover
+/// the tiles in c.tiles.list (in increasing order): a run of neighbours in a row of tiles is
+/// one rectangle, so that a run across the whole buffer is filled or copied as contiguous
+/// memory. On the pipeline's threads, a rectangle each, when there are many tiles.
+template <class Fn>
+void for_listed_tiles(GlContext& c, const Fn& fn) {
+  constexpr int kSize = PipelineContext::kTileSize;
+  TileMap& m = c.tiles;
+  m.runs.clear();  // (first tile, tiles) pairs
+  for (std::size_t i = 0; i < m.list.size();) {
+    std::size_t j = i + 1;
+    while (j < m.list.size() && m.list[j] == m.list[j - 1] + 1 && m.list[j] % m.columns != 0) ++j;
+    m.runs.push_back(m.list[i]);
+    m.runs.push_back(int(j - i));
+    i = j;
+  }
+  auto rects = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t r = begin; r < end; ++r) {
+      const int first = m.runs[2 * r], tx = (first % m.columns) * kSize, ty = (first / m.columns) * kSize;
+      fn(tx, ty, std::min(tx + m.runs[2 * r + 1] * kSize, c.fb.width), std::min(ty + kSize, c.fb.height));
+    }
+  };
+  const std::size_t runs = m.runs.size() / 2;
+  if (c.pipeline && m.list.size() >= 16) c.pipeline->parallel_for(runs, 1, rects);
+  else rects(0, runs);
+}
 
 /// The flag behind a glEnable capability (nullptr: not accepted) and behind a client array.
 bool* capability_flag(GlContext& c, GLenum cap);

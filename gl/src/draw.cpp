@@ -321,7 +321,8 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
-  mark_batch(c, projection, batch.s.positions);
+  if (c.pipeline) mark_drawn(c);
+  else mark_batch(c, projection, batch.s.positions);
 }
 
 // Draws what can be drawn of a long primitive and keeps the vertices it still needs.
@@ -465,9 +466,10 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   in.triangles = m.triangles;
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
-  // The whole viewport is marked (one copy per flush), not the bounds of every vertex.
+  // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
   const Viewport& vp = c.raster.viewport;
-  mark_dirty(c, vp.x, vp.y, vp.x + vp.width, vp.y + vp.height);
+  if (c.pipeline) mark_drawn(c);
+  else mark_dirty(c, vp.x, vp.y, vp.x + vp.width, vp.y + vp.height);
   return true;
 }
 

@@ -2,6 +2,7 @@
 // glColorMask, glBlendFunc, glStencil*, glCullFace, glFrontFace, glPolygonOffset, glClear*.
 // Stores state; the core pipeline applies it per fragment. glClear writes the framebuffer.
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstring>
 #include <array>
@@ -35,17 +36,46 @@ void for_pixels(GlContext& c, const Fn& fn) {
   else fn(0, n);
 }
 
-// The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3).
+// Lists in c.tiles.list the tiles a clear must write: all of them, or with `same_value`
+// (the clear writes the value the tiles flagged `flag` hold) those not flagged. Every tile
+// is then flagged; a colour clear also marks every tile changed, since the caller may have
+// written into its buffer since the last flush (in Mesa, glClear writes the buffer itself).
+void list_tiles_to_clear(GlContext& c, std::uint8_t flag, bool same_value) {
+  TileMap& m = c.tiles;
+  const std::uint8_t set = flag == TileMap::kColorClear ? std::uint8_t(flag | TileMap::kChanged) : flag;
+  m.list.clear();
+  for (std::size_t t = 0; t < m.flags.size(); ++t) {
+    if (!(same_value && (m.flags[t] & flag))) m.list.push_back(int(t));
+    m.flags[t] |= set;
+  }
+}
+
+// Fills the listed tiles of `buffer` (one T per pixel) with `value`.
+template <class T>
+void clear_listed_tiles(GlContext& c, T* buffer, T value) {
+  const std::size_t width = std::size_t(c.fb.width);
+  for_listed_tiles(c, [&](int x0, int y0, int x1, int y1) {
+    for (int y = y0; y < y1; ++y) {
+      T* row = buffer + std::size_t(y) * width;
+      std::fill(row + x0, row + x1, value);
+    }
+  });
+}
+
+// The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3). Unmasked, tiles
+// that still hold the same clear colour are left as they are.
 void clear_color(GlContext& c) {
   const auto& mask = c.raster.color_mask;
   const std::array<std::uint8_t, 4> bytes = Framebuffer::color_bytes(c.raster.clear_color);  // the core's rounding
   const std::uint8_t* px = bytes.data();
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   bool all = mask[0] && mask[1] && mask[2] && mask[3];
   if (all) {  // whole pixels: one 32-bit store each, vectorized
     std::uint32_t value;
     std::memcpy(&value, px, 4);
-    auto* pixels = reinterpret_cast<std::uint32_t*>(c.fb.color.data());
-    for_pixels(c, [&](std::size_t begin, std::size_t end) { std::fill(pixels + begin, pixels + end, value); });
+    list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color);
+    c.tiles.clear_color = value;
+    clear_listed_tiles(c, reinterpret_cast<std::uint32_t*>(c.fb.color.data()), value);
     return;
   }
   for_pixels(c, [&](std::size_t begin, std::size_t end) {
@@ -56,13 +86,16 @@ void clear_color(GlContext& c) {
       }
     }
   });
+  for (std::uint8_t& f : c.tiles.flags) f = TileMap::kChanged | (f & TileMap::kDepthClear);
 }
 
+// Tiles that still hold the same clear depth are left as they are.
 void clear_depth(GlContext& c) {
   float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
-  for_pixels(c, [&](std::size_t begin, std::size_t end) {
-    std::fill(c.fb.depth.begin() + std::ptrdiff_t(begin), c.fb.depth.begin() + std::ptrdiff_t(end), d);
-  });
+  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  list_tiles_to_clear(c, TileMap::kDepthClear, std::bit_cast<std::uint32_t>(d) == std::bit_cast<std::uint32_t>(c.tiles.clear_depth));
+  c.tiles.clear_depth = d;
+  clear_listed_tiles(c, c.fb.depth.data(), d);
 }
 
 void clear_stencil(GlContext& c) {
@@ -106,10 +139,7 @@ void GLAPIENTRY glClear(GLbitfield mask) {
     const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
                              GL_ACCUM_BUFFER_BIT;
     if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
-    if (mask & GL_COLOR_BUFFER_BIT) {
-      clear_color(c);
-      mark_dirty(c, 0, 0, c.fb.width, c.fb.height);
-    }
+    if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
     if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
       clear_depth(c);
     }

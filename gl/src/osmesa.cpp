@@ -48,7 +48,7 @@ void bind_buffer(GlContext& c, void* buffer, int width, int height) {
   c.user.format = c.buffer_format;
   if (c.fb.width != width || c.fb.height != height) c.fb.resize(width, height);
   import_user_buffer(c);
-  c.dirty = {};
+  reset_tiles(c);
   if (!c.ever_current) {
     // The first binding sets the viewport to the whole buffer (GL 1.1 section 2.10.1).
     c.raster.viewport.width = width;
@@ -136,7 +136,7 @@ void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value) {
     } else {
       return c.set_error(GL_INVALID_ENUM);
     }
-    mark_dirty(c, 0, 0, c.fb.width, c.fb.height);
+    mark_all_changed(c);
     present(c);
   });
 }

@@ -1,7 +1,8 @@
-// The link between the context's framebuffer and the caller's OSMesa buffer: the rectangle
-// changed since the last flush is copied out at glFinish / glFlush and when the current
-// context changes (in the buffer's format, row length and Y direction), the buffer is read in at OSMesaMakeCurrent, and depth values are exported in
-// Mesa's layout for OSMesaGetDepthBuffer. No drawing here.
+// The link between the context's framebuffer and the caller's OSMesa buffer: the tiles
+// changed since the last flush are copied out at glFinish / glFlush and when the current
+// context changes (in the buffer's format, row length and Y direction), the buffer is read in
+// at OSMesaMakeCurrent, and depth values are exported in Mesa's layout for
+// OSMesaGetDepthBuffer. No drawing here.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -39,42 +40,75 @@ unsigned char* user_row(const UserBuffer& u, int y, int bytes) {
 
 }  // namespace
 
+void reset_tiles(GlContext& c) {
+  constexpr int kSize = PipelineContext::kTileSize;
+  TileMap& m = c.tiles;
+  m.columns = (c.fb.width + kSize - 1) / kSize;
+  m.rows = (c.fb.height + kSize - 1) / kSize;
+  m.flags.assign(std::size_t(m.columns) * std::size_t(m.rows), 0);
+}
+
 void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1) {
+  constexpr int kSize = PipelineContext::kTileSize;
   x0 = std::max(x0, 0), y0 = std::max(y0, 0);
   x1 = std::min(x1, c.fb.width), y1 = std::min(y1, c.fb.height);
   if (x0 >= x1 || y0 >= y1) return;
-  DirtyRect& d = c.dirty;
-  if (d.empty()) {
-    d = {x0, y0, x1, y1};
-    return;
+  TileMap& m = c.tiles;
+  for (int ty = y0 / kSize; ty <= (y1 - 1) / kSize; ++ty) {
+    for (int tx = x0 / kSize; tx <= (x1 - 1) / kSize; ++tx) {
+      std::uint8_t& f = m.flags[std::size_t(ty) * std::size_t(m.columns) + std::size_t(tx)];
+      f = TileMap::kChanged;  // and no longer known cleared
+    }
   }
-  d = {std::min(d.x0, x0), std::min(d.y0, y0), std::max(d.x1, x1), std::max(d.y1, y1)};
+}
+
+void mark_drawn(GlContext& c) {
+  for (int t : c.pipeline->last_draw_tiles()) c.tiles.flags[std::size_t(t)] = TileMap::kChanged;
+}
+
+void mark_all_changed(GlContext& c) {
+  for (std::uint8_t& f : c.tiles.flags) f |= TileMap::kChanged;
 }
 
 void present(GlContext& c) {
-  DirtyRect d = c.dirty;
-  c.dirty = {};
   const UserBuffer& u = c.user;
-  if (d.empty() || !u.data) return;
-  Swizzle s = swizzle_of(u.format);
-  auto rows = [&](std::size_t begin, std::size_t end) {
-    for (int y = d.y0 + int(begin); y < d.y0 + int(end); ++y) {
-      const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(d.x0)) * 4];
-      unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(d.x0) * std::size_t(s.bytes);
-      if (u.format == OSMESA_RGBA) {
-        std::memcpy(dst, src, std::size_t(d.x1 - d.x0) * 4);
-        continue;
-      }
-      for (int x = d.x0; x < d.x1; ++x, src += 4, dst += s.bytes) {
-        dst[s.r] = src[0], dst[s.g] = src[1], dst[s.b] = src[2];
-        if (s.a >= 0) dst[s.a] = src[3];
-      }
+  if (!u.data) return;
+  TileMap& m = c.tiles;
+  const Swizzle s = swizzle_of(u.format);
+  // Tiles holding nothing but the clear colour are filled with it in the caller's format
+  // (writing without reading the framebuffer); the others are copied.
+  for (bool cleared : {true, false}) {
+    m.list.clear();
+    for (std::size_t t = 0; t < m.flags.size(); ++t) {
+      const std::uint8_t f = m.flags[t];
+      if ((f & TileMap::kChanged) && ((f & TileMap::kColorClear) != 0) == cleared) m.list.push_back(int(t));
     }
-  };
-  std::size_t n = std::size_t(d.y1 - d.y0);
-  std::size_t pixels = n * std::size_t(d.x1 - d.x0);
-  if (c.pipeline && pixels >= (1u << 16)) c.pipeline->parallel_for(n, std::max<std::size_t>(1, n / 16), rows);
-  else rows(0, n);
+    unsigned char pixel[4];
+    const auto* clear = reinterpret_cast<const std::uint8_t*>(&m.clear_color);
+    pixel[s.r] = clear[0], pixel[s.g] = clear[1], pixel[s.b] = clear[2];
+    if (s.a >= 0) pixel[s.a] = clear[3];
+    for_listed_tiles(c, [&](int x0, int y0, int x1, int y1) {
+      for (int y = y0; y < y1; ++y) {
+        const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x0)) * 4];
+        unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(x0) * std::size_t(s.bytes);
+        if (cleared && s.bytes == 4) {
+          std::uint32_t value;
+          std::memcpy(&value, pixel, 4);
+          for (int x = x0; x < x1; ++x, dst += 4) std::memcpy(dst, &value, 4);
+        } else if (cleared) {
+          for (int x = x0; x < x1; ++x, dst += 3) std::memcpy(dst, pixel, 3);
+        } else if (u.format == OSMESA_RGBA) {
+          std::memcpy(dst, src, std::size_t(x1 - x0) * 4);
+        } else {
+          for (int x = x0; x < x1; ++x, src += 4, dst += s.bytes) {
+            dst[s.r] = src[0], dst[s.g] = src[1], dst[s.b] = src[2];
+            if (s.a >= 0) dst[s.a] = src[3];
+          }
+        }
+      }
+    });
+  }
+  for (std::uint8_t& f : m.flags) f &= std::uint8_t(~TileMap::kChanged);
 }
 
 // The caller's buffer is the colour buffer, as in classic OSMesa: its pixels are read in

@@ -179,6 +179,12 @@ class PipelineContext {
   PipelineContext(const PipelineContext&) = delete;
   PipelineContext& operator=(const PipelineContext&) = delete;
   int threads() const;
+  /// The framebuffer's tiles: squares of kTileSize pixels, numbered row by row from pixel
+  /// (0, 0), (width + kTileSize - 1) / kTileSize to a row.
+  static constexpr int kTileSize = 64;
+  /// The tiles the last draw_triangles through this context may have written to (those its
+  /// triangles reached, in increasing order); no pixel outside them changed.
+  std::span<const int> last_draw_tiles() const;
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that
   /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.

@@ -22,6 +22,8 @@ PipelineContext::~PipelineContext() = default;
 
 int PipelineContext::threads() const { return impl_->pool.size(); }
 
+std::span<const int> PipelineContext::last_draw_tiles() const { return impl_->tiles; }
+
 void PipelineContext::parallel_for_ref(std::size_t count, std::size_t grain,
                                        void (*call)(void*, std::size_t, std::size_t), void* fn) {
   if (count == 0) return;
@@ -109,12 +111,15 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
                                  const glm::mat4& projection, const Viewport& viewport,
                                  const FragmentState& fragment, const ShadeState& shade,
                                  const VertexInput& in, RenderStats* stats_out) {
-  if (!fast::in_fixed_point_range(fb, viewport)) {
+  PipelineContext::Impl& impl = context.impl();
+  if (!fast::in_fixed_point_range(fb, viewport)) {  // the reference draws: any tile may change
+    const int columns = (fb.width + fast::kTileSize - 1) / fast::kTileSize;
+    impl.tiles.resize(std::size_t(columns) * std::size_t((fb.height + fast::kTileSize - 1) / fast::kTileSize));
+    for (std::size_t t = 0; t < impl.tiles.size(); ++t) impl.tiles[t] = int(t);
     return draw_triangles(fb, projection, viewport, fragment, shade, in, stats_out);
   }
   RenderStats local;
   RenderStats& stats = stats_out ? *stats_out : local;
-  PipelineContext::Impl& impl = context.impl();
   // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
   ShadeState effective = shade;
   if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;

@@ -18,6 +18,7 @@ namespace shadelab::fast {
 
 inline constexpr int kTileShift = 6;  ///< 64 x 64 pixel tiles
 inline constexpr int kTileSize = 1 << kTileShift;
+static_assert(kTileSize == PipelineContext::kTileSize, "the tiles last_draw_tiles names");
 inline constexpr float kMinClipW = 1e-6f;  ///< clip.cpp's w >= epsilon plane
 
 /// The float just below 1/2 (1/2 - 2^-25). For every float s in [0, 255], trunc(s +
