@@ -220,6 +220,7 @@ struct TileMap {
   float clear_depth = 0.0f;         // the depth of kDepthClear tiles
   std::vector<int> list;            // scratch: the tiles an operation visits
   std::vector<int> runs;            // scratch: for_listed_tiles' runs of neighbouring tiles
+  std::vector<unsigned char> clear_row;  // scratch: a row of the clear colour, caller's format
 };
 
 struct GlContext {

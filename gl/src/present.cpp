@@ -83,20 +83,21 @@ void present(GlContext& c) {
       const std::uint8_t f = m.flags[t];
       if ((f & TileMap::kChanged) && ((f & TileMap::kColorClear) != 0) == cleared) m.list.push_back(int(t));
     }
-    unsigned char pixel[4];
-    const auto* clear = reinterpret_cast<const std::uint8_t*>(&m.clear_color);
-    pixel[s.r] = clear[0], pixel[s.g] = clear[1], pixel[s.b] = clear[2];
-    if (s.a >= 0) pixel[s.a] = clear[3];
+    if (cleared && !m.list.empty()) {  // a row of the clear colour in the caller's format
+      const auto* clear = reinterpret_cast<const std::uint8_t*>(&m.clear_color);
+      m.clear_row.resize(std::size_t(c.fb.width) * std::size_t(s.bytes));
+      for (std::size_t i = 0; i < m.clear_row.size(); i += std::size_t(s.bytes)) {
+        unsigned char* p = &m.clear_row[i];
+        p[s.r] = clear[0], p[s.g] = clear[1], p[s.b] = clear[2];
+        if (s.a >= 0) p[s.a] = clear[3];
+      }
+    }
     for_listed_tiles(c, [&](int x0, int y0, int x1, int y1) {
       for (int y = y0; y < y1; ++y) {
         const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x0)) * 4];
         unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(x0) * std::size_t(s.bytes);
-        if (cleared && s.bytes == 4) {
-          std::uint32_t value;
-          std::memcpy(&value, pixel, 4);
-          for (int x = x0; x < x1; ++x, dst += 4) std::memcpy(dst, &value, 4);
-        } else if (cleared) {
-          for (int x = x0; x < x1; ++x, dst += 3) std::memcpy(dst, pixel, 3);
+        if (cleared) {
+          std::memcpy(dst, m.clear_row.data(), std::size_t(x1 - x0) * std::size_t(s.bytes));
         } else if (u.format == OSMESA_RGBA) {
           std::memcpy(dst, src, std::size_t(x1 - x0) * 4);
         } else {
