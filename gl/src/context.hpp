@@ -298,7 +298,11 @@ void outside_begin_end(F&& f) noexcept {
 
 /// Copies the tiles changed since the last copy into the caller's buffer (present.cpp).
 void present(GlContext& c);
-/// Sizes the tile map for the framebuffer: nothing changed, nothing known cleared.
+/// Applies the clears left to the draws (PipelineContext::PendingClears) now: before anything
+/// but a draw through the pipeline reads or writes the framebuffer.
+void settle_clears(GlContext& c);
+/// Sizes the tile map for the framebuffer: nothing changed, nothing known cleared, nothing
+/// pending.
 void reset_tiles(GlContext& c);
 /// Refreshes `depth_export` from the framebuffer's depth (and stencil) in Mesa's layout.
 void export_depth(GlContext& c);

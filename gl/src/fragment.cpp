@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstring>
 #include <array>
+#include <type_traits>
 
 #include "gl/src/context.hpp"
 
@@ -50,9 +51,21 @@ void list_tiles_to_clear(GlContext& c, std::uint8_t flag, bool same_value) {
   }
 }
 
-// Fills the listed tiles of `buffer` (one T per pixel) with `value`.
+// Clears the listed tiles of `buffer` (one T per pixel: colour, what = kColor, or depth) to
+// `value`: with the pipeline, left to the draws (PipelineContext::PendingClears: a tile is
+// cleared by the draw that next draws into it, while the tile is in the cache, and tiles
+// holding the clear colour reach the caller's buffer without being read, present.cpp);
+// without it, at once.
 template <class T>
-void clear_listed_tiles(GlContext& c, T* buffer, T value) {
+void clear_listed_tiles(GlContext& c, std::uint8_t what, T* buffer, T value) {
+  if (c.pipeline) {
+    PipelineContext::PendingClears& p = c.pipeline->pending_clears();
+    p.tiles.resize(c.tiles.flags.size());  // zeroed with the tile map (reset_tiles)
+    if constexpr (std::is_same_v<T, float>) p.depth = value;
+    else p.color = value;
+    for (int t : c.tiles.list) p.tiles[std::size_t(t)] |= what;
+    return;
+  }
   const std::size_t width = std::size_t(c.fb.width);
   for_listed_tiles(c, [&](int x0, int y0, int x1, int y1) {
     for (int y = y0; y < y1; ++y) {
@@ -75,9 +88,10 @@ void clear_color(GlContext& c) {
     std::memcpy(&value, px, 4);
     list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color);
     c.tiles.clear_color = value;
-    clear_listed_tiles(c, reinterpret_cast<std::uint32_t*>(c.fb.color.data()), value);
+    clear_listed_tiles(c, PipelineContext::PendingClears::kColor, reinterpret_cast<std::uint32_t*>(c.fb.color.data()), value);
     return;
   }
+  settle_clears(c);
   for_pixels(c, [&](std::size_t begin, std::size_t end) {
     std::uint8_t* color = c.fb.color.data();
     for (std::size_t i = begin * 4; i < end * 4; i += 4) {
@@ -95,7 +109,7 @@ void clear_depth(GlContext& c) {
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   list_tiles_to_clear(c, TileMap::kDepthClear, std::bit_cast<std::uint32_t>(d) == std::bit_cast<std::uint32_t>(c.tiles.clear_depth));
   c.tiles.clear_depth = d;
-  clear_listed_tiles(c, c.fb.depth.data(), d);
+  clear_listed_tiles(c, PipelineContext::PendingClears::kDepth, c.fb.depth.data(), d);
 }
 
 void clear_stencil(GlContext& c) {

@@ -42,6 +42,7 @@ OSMesaContext create(GLenum format, GLint depth, GLint stencil, OSMesaContext sh
 // Binds the caller's buffer: the framebuffer takes its size (keeping depth and stencil when
 // the size is unchanged) and its pixels.
 void bind_buffer(GlContext& c, void* buffer, int width, int height) {
+  settle_clears(c);  // depth is kept
   c.user.data = buffer;
   c.user.width = width;
   c.user.height = height;

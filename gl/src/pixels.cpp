@@ -177,6 +177,7 @@ void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GL
     }
     if (width == 0 || height == 0) return;
     if (!pixels) return c.set_error(GL_INVALID_VALUE);
+    settle_clears(c);
     PixelLayout layout = pixel_layout(c.pack, n, size, width);
     auto* out = static_cast<unsigned char*>(pixels);
     int x0 = std::max(0, -x), y0 = std::max(0, -y);

@@ -40,12 +40,17 @@ unsigned char* user_row(const UserBuffer& u, int y, int bytes) {
 
 }  // namespace
 
+void settle_clears(GlContext& c) {
+  if (c.pipeline) c.pipeline->apply_pending_clears(c.fb);
+}
+
 void reset_tiles(GlContext& c) {
   constexpr int kSize = PipelineContext::kTileSize;
   TileMap& m = c.tiles;
   m.columns = (c.fb.width + kSize - 1) / kSize;
   m.rows = (c.fb.height + kSize - 1) / kSize;
   m.flags.assign(std::size_t(m.columns) * std::size_t(m.rows), 0);
+  if (c.pipeline) c.pipeline->pending_clears().tiles.assign(m.flags.size(), 0);
 }
 
 void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1) {
@@ -130,6 +135,7 @@ void import_user_buffer(GlContext& c) {
 // Mesa's depth layouts (checked against libOSMesa 22.3): 16-bit depth as GLushort; 24-bit
 // depth in the low bits of a GLuint with the 8-bit stencil value in the high byte.
 void export_depth(GlContext& c) {
+  settle_clears(c);
   std::size_t n = c.fb.depth.size();
   int bytes = c.depth_bits == 16 ? 2 : 4;
   c.depth_export.resize(n * std::size_t(bytes));

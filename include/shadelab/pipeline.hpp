@@ -185,6 +185,21 @@ class PipelineContext {
   /// The tiles the last draw_triangles through this context may have written to (those its
   /// triangles reached, in increasing order); no pixel outside them changed.
   std::span<const int> last_draw_tiles() const;
+  /// Clears left to the draws, as llvmpipe does (the GL library's glClear): a tile flagged in
+  /// `tiles` is cleared (colour to `color` with kColor, depth to `depth` with kDepth) by the
+  /// next draw_triangles through this context that draws into it, just before its first
+  /// triangle, while the tile is in the cache; its flag is then reset. Whoever flags tiles
+  /// sizes `tiles` to the framebuffer's and calls apply_pending_clears before anything else
+  /// reads or writes the framebuffer. Empty: nothing pending.
+  struct PendingClears {
+    static constexpr std::uint8_t kColor = 1, kDepth = 2;
+    std::vector<std::uint8_t> tiles;
+    std::uint32_t color = 0;  ///< the pixel's RGBA8 bytes
+    float depth = 1.0f;
+  };
+  PendingClears& pending_clears();
+  /// Applies every pending clear to `fb` now, on the context's threads.
+  void apply_pending_clears(Framebuffer& fb);
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that
   /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.

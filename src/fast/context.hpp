@@ -16,6 +16,7 @@ struct PipelineContext::Impl {
   fast::DrawJob job;
   std::vector<fast::WorkerScratch> workers;  ///< one per pool thread
   std::vector<int> tiles;                    ///< the current draw's non-empty tiles
+  PendingClears pending;                     ///< clears left to the draws
 };
 
 }  // namespace shadelab

@@ -24,6 +24,47 @@ int PipelineContext::threads() const { return impl_->pool.size(); }
 
 std::span<const int> PipelineContext::last_draw_tiles() const { return impl_->tiles; }
 
+PipelineContext::PendingClears& PipelineContext::pending_clears() { return impl_->pending; }
+
+namespace fast {
+namespace {
+
+int tile_count(const Framebuffer& fb) {
+  return ((fb.width + kTileSize - 1) / kTileSize) * ((fb.height + kTileSize - 1) / kTileSize);
+}
+
+// Applies tile `tile`'s pending clear, if any, and resets its flag.
+void clear_tile(Framebuffer& fb, PipelineContext::PendingClears& p, int tile) {
+  const std::uint8_t what = p.tiles[std::size_t(tile)];
+  if (!what) return;
+  p.tiles[std::size_t(tile)] = 0;
+  const int columns = (fb.width + kTileSize - 1) / kTileSize;
+  const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
+  const int x1 = std::min(fb.width, x0 + kTileSize), y1 = std::min(fb.height, y0 + kTileSize);
+  auto* color = reinterpret_cast<std::uint32_t*>(fb.color.data());
+  for (int y = y0; y < y1; ++y) {
+    const std::size_t row = std::size_t(y) * std::size_t(fb.width);
+    if (what & PipelineContext::PendingClears::kColor) std::fill(color + row + x0, color + row + x1, p.color);
+    if (what & PipelineContext::PendingClears::kDepth) std::fill(&fb.depth[row + std::size_t(x0)], &fb.depth[row + std::size_t(x1)], p.depth);
+  }
+}
+
+// Whether `p` holds flags for `fb`'s tiles (anything else is nothing pending).
+bool pending_for(const PipelineContext::PendingClears& p, const Framebuffer& fb) {
+  return !p.tiles.empty() && p.tiles.size() == std::size_t(tile_count(fb));
+}
+
+}  // namespace
+}  // namespace fast
+
+void PipelineContext::apply_pending_clears(Framebuffer& fb) {
+  PendingClears& p = impl_->pending;
+  if (!fast::pending_for(p, fb)) return;
+  parallel_for(p.tiles.size(), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) fast::clear_tile(fb, p, int(t));
+  });
+}
+
 void PipelineContext::parallel_for_ref(std::size_t count, std::size_t grain,
                                        void (*call)(void*, std::size_t, std::size_t), void* fn) {
   if (count == 0) return;
@@ -113,8 +154,8 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
                                  const VertexInput& in, RenderStats* stats_out) {
   PipelineContext::Impl& impl = context.impl();
   if (!fast::in_fixed_point_range(fb, viewport)) {  // the reference draws: any tile may change
-    const int columns = (fb.width + fast::kTileSize - 1) / fast::kTileSize;
-    impl.tiles.resize(std::size_t(columns) * std::size_t((fb.height + fast::kTileSize - 1) / fast::kTileSize));
+    context.apply_pending_clears(fb);
+    impl.tiles.resize(std::size_t(fast::tile_count(fb)));
     for (std::size_t t = 0; t < impl.tiles.size(); ++t) impl.tiles[t] = int(t);
     return draw_triangles(fb, projection, viewport, fragment, shade, in, stats_out);
   }
@@ -145,9 +186,12 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
   // (a vector's storage is 16-byte aligned), so two tiles next to each other share a line in
   // every row, and two threads writing them pass those lines back and forth (the full-screen
   // Gouraud fill ran no faster on two threads than on one, claiming tiles in order).
+  // A tile's pending clear is applied by the thread that draws it, just before drawing.
   const std::size_t tiles = impl.tiles.size(), half = (tiles + 1) / 2;
+  const bool pending = fast::pending_for(impl.pending, fb);
   impl.pool.run(int(tiles), [&](int i, int worker) {
     const std::size_t k = (std::size_t(i) % 2) * half + std::size_t(i) / 2;
+    if (pending) fast::clear_tile(fb, impl.pending, impl.tiles[k]);
     fast::raster_tile(job, impl.tiles[k], impl.workers[std::size_t(worker)]);
   });
   for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(stats, job.chunks[std::size_t(c)].stats);

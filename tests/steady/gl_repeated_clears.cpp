@@ -3,8 +3,10 @@
 // caller's buffer only what changed (gl/src/context.hpp, TileMap); every frame must still
 // come out as if everything had been cleared and copied: parts drawn in the frame before are
 // cleared again (colour and depth), pixels the caller wrote into its own buffer are cleared
-// (in Mesa, glClear writes that buffer), a new clear colour reaches every pixel, and a clear
-// through a colour mask is followed by a full clear that writes every pixel again.
+// (in Mesa, glClear writes that buffer), a new clear colour reaches every pixel, a clear
+// through a colour mask is followed by a full clear that writes every pixel again, and a
+// depth clear left to the next draw (PipelineContext::PendingClears) survives binding the
+// context to another buffer.
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
@@ -116,6 +118,24 @@ int main() {
   glFinish();
   expect_user(100, 100, kBlue, "a full clear after a masked one");
   expect_user(kW - 1, 0, kBlue, "a full clear after a masked one, a partial tile");
+
+  // A depth clear, then the context bound to another buffer of the same size (depth is
+  // kept): a square behind one drawn before the clear passes GL_LESS.
+  clear(0.0f, 0.0f, 1.0f);
+  glColor3f(0.0f, 1.0f, 0.0f);
+  rect(100, 50, 160, 110, 0.0f);
+  glFinish();
+  glClear(GL_DEPTH_BUFFER_BIT);
+  std::vector<unsigned char> other(buffer.size());
+  if (!OSMesaMakeCurrent(ctx, other.data(), GL_UNSIGNED_BYTE, kW, kH)) return 2;
+  glColor3f(1.0f, 0.0f, 0.0f);
+  rect(100, 50, 160, 110, -0.5f);
+  glFinish();
+  const unsigned char* p = &other[(std::size_t(80) * kW + 130) * 4];
+  if (p[0] != 255 || p[1] != 0 || p[2] != 0) {
+    std::printf("FAIL a depth clear before rebinding: pixel (130, 80) is %d %d %d, expected 255 0 0\n", p[0], p[1], p[2]);
+    ++failures;
+  }
 
   OSMesaDestroyContext(ctx);
   std::printf("%s\n", failures ? "FAILED" : "every frame as if wholly cleared and copied");
