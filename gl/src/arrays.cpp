@@ -121,7 +121,7 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
       texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), false) : now.texcoord;
     }
   };
-  std::vector<std::uint32_t>& sequence = c.array_scratch.sequence;
+  auto& sequence = c.array_scratch.sequence;
   sequence.resize(count);
   std::uint32_t lo = UINT32_MAX, hi = 0;
   std::mutex bounds;

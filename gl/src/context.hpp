@@ -174,14 +174,15 @@ struct Primitive {
 /// Reused buffers of the vertex-array path (draw.cpp's draw_array_mesh): one entry per
 /// array element from the draw's smallest index to its largest, so a shared vertex is
 /// transformed and lit once.
+// Every array is written in full after each resize (resizing zeroes nothing).
 struct ArrayScratch {
-  std::vector<glm::vec4> positions, colors;
-  std::vector<glm::vec3> normals;
-  std::vector<glm::vec2> texcoords;
-  std::vector<glm::vec4> raw_texcoords;  // before the texture matrix
-  std::vector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
-  std::vector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
-  std::vector<Triangle> triangles;
+  detail::ScratchVector<glm::vec4> positions, colors;
+  detail::ScratchVector<glm::vec3> normals;
+  detail::ScratchVector<glm::vec2> texcoords;
+  detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
+  detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
+  detail::ScratchVector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
+  detail::ScratchVector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
 };
 
