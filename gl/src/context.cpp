@@ -29,11 +29,6 @@ MatrixStack& GlContext::current_stack() {
   }
 }
 
-GlContext*& current_context() {
-  static thread_local GlContext* current = nullptr;
-  return current;
-}
-
 namespace {
 
 void track(Material& m, GLenum mode, const glm::vec4& color) {

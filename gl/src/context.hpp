@@ -268,8 +268,12 @@ struct GlContext {
   MatrixStack& current_stack();
 };
 
-/// The context current in this thread (nullptr when none).
-GlContext*& current_context();
+/// The context current in this thread (nullptr when none). Initial-exec TLS, as Mesa's own
+/// dispatch pointer: every GL call reads it with one load, where the default model for a
+/// shared library calls __tls_get_addr (glBegin/glEnd programs make tens of thousands of calls
+/// a frame).
+inline thread_local GlContext* current_context_ __attribute__((tls_model("initial-exec"))) = nullptr;
+inline GlContext*& current_context() { return current_context_; }
 
 /// Runs `f(ctx)` on the current context, if any; exceptions (out of memory) become
 /// GL_OUT_OF_MEMORY so that nothing unwinds into C callers.
