@@ -5,7 +5,12 @@
 // OSMesaGetDepthBuffer. No drawing here.
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include <GL/osmesa.h>
 
@@ -36,6 +41,19 @@ unsigned char* user_row(const UserBuffer& u, int y, int bytes) {
   std::size_t row_pixels = std::size_t(u.row_length > 0 ? u.row_length : u.width);
   std::size_t row = std::size_t(u.y_up ? y : u.height - 1 - y);
   return static_cast<unsigned char*>(u.data) + row * row_pixels * std::size_t(bytes);
+}
+
+// memcpy into the caller's buffer with streaming stores where the target has them: the
+// buffer is written, never read here, so its lines need not be read into the cache first
+// (the copy and the fill of a full-HD frame would read 8 MB to overwrite them).
+void stream_copy(unsigned char* dst, const unsigned char* src, std::size_t n) {
+#if defined(__SSE2__)
+  while (n > 0 && (reinterpret_cast<std::uintptr_t>(dst) & 15u) != 0) *dst++ = *src++, --n;
+  for (; n >= 16; n -= 16, dst += 16, src += 16) {
+    _mm_stream_si128(reinterpret_cast<__m128i*>(dst), _mm_loadu_si128(reinterpret_cast<const __m128i*>(src)));
+  }
+#endif
+  std::memcpy(dst, src, n);
 }
 
 }  // namespace
@@ -102,9 +120,9 @@ void present(GlContext& c) {
         const std::uint8_t* src = &c.fb.color[(std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x0)) * 4];
         unsigned char* dst = user_row(u, y, s.bytes) + std::size_t(x0) * std::size_t(s.bytes);
         if (cleared) {
-          std::memcpy(dst, m.clear_row.data(), std::size_t(x1 - x0) * std::size_t(s.bytes));
+          stream_copy(dst, m.clear_row.data(), std::size_t(x1 - x0) * std::size_t(s.bytes));
         } else if (u.format == OSMESA_RGBA) {
-          std::memcpy(dst, src, std::size_t(x1 - x0) * 4);
+          stream_copy(dst, src, std::size_t(x1 - x0) * 4);
         } else {
           for (int x = x0; x < x1; ++x, src += 4, dst += s.bytes) {
             dst[s.r] = src[0], dst[s.g] = src[1], dst[s.b] = src[2];
@@ -112,6 +130,9 @@ void present(GlContext& c) {
           }
         }
       }
+#if defined(__SSE2__)
+      _mm_sfence();  // the streaming stores are seen before the flush returns
+#endif
     });
   }
   for (std::uint8_t& f : m.flags) f &= std::uint8_t(~TileMap::kChanged);
