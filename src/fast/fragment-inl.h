@@ -20,6 +20,7 @@
 #define SHADELAB_FAST_FRAGMENT_INL_H_
 #endif
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fast/lighting-inl.h"
@@ -237,6 +238,10 @@ HWY_INLINE VB linear_varying(const Weights& w, const Plane& p) {
 struct TrianglePlanes {
   Plane color[4], secondary[3];
   bool has_secondary;
+  // One colour over the whole triangle (flat shading, a colour given once: glRect's layers),
+  // clamped as write_colors clamps: what every lane's sum would be (zero differences).
+  bool uniform;
+  float uniform_color[4];
   Plane position[3], normal[3];
   bool exact;          // the reference's arithmetic for every varying (a non-finite one)
   bool ready = false;  // set up at the first fragment that passes its tests
@@ -260,15 +265,28 @@ HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePla
   out.exact = !set_up(t, color, t.flat, out.color);
   out.has_secondary = secondary >= 0;
   if (out.has_secondary && !set_up(t, secondary, t.flat, out.secondary)) out.exact = true;
+  out.uniform = !out.exact && !out.has_secondary;
+  for (int c = 0; c < 4; ++c) {
+    const Plane& p = out.color[c];
+    out.uniform = out.uniform && p.d0 == 0.0f && p.d1 == 0.0f;
+    out.uniform_color[c] = p.base > 0.0f ? std::min(p.base, 1.0f) : 0.0f;  // clamp_unit
+  }
 }
 
 struct Rgba {
   VB c[4];
+  bool clamped = false;  // already in [0, 1] as clamp_unit leaves it
 };
 
 // Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp).
 HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w) {
   Rgba out;
+  if (planes.uniform) {
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) out.c[c] = hn::Set(DB(), planes.uniform_color[c]);
+    out.clamped = true;
+    return out;
+  }
   if (!planes.exact && !planes.has_secondary) {  // the usual case, without branches
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out.c[c] = linear_varying(w, planes.color[c]);
@@ -409,9 +427,11 @@ HWY_INLINE VB byte_to_unit(VB x) {
 HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
                              std::uint32_t* const rows[kRows]) {
   const DUB dub;
-  Rgba out;
-  #pragma GCC unroll 4
-  for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
+  Rgba out = color;
+  if (!color.clamped) {
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
+  }
   bool masked = !(fs.color_mask[0] && fs.color_mask[1] && fs.color_mask[2] && fs.color_mask[3]);
   hn::Vec<DUB> old = (fs.blend.enabled || masked) ? load_rows(DU(), rows) : hn::Zero(dub);
   if (fs.blend.enabled) {
