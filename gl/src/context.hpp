@@ -162,6 +162,10 @@ struct Primitive {
   // at glBegin. A material change inside the primitive lights the vertices so far and ends
   // the deferral (settle_lighting).
   bool deferred_lighting = false;
+  // While lighting is deferred (smooth shading): normals kept as given and transformed to eye
+  // space by draw_vertices on the pipeline's threads, not by each glVertex call.
+  bool object_normals = false;
+  bool textured = false;  // a texture applies: texture coordinates are kept
   // Fixed at glBegin:
   glm::mat4 modelview{1.0f};
   glm::mat3 normal_matrix{1.0f};

@@ -274,6 +274,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
     for (std::size_t i = begin; i < end; ++i) {
       const PrimitiveVertex& v = p.vertices[i];
       batch.set(i, v);
+      if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
       finite[i] = finite_clip(projection, small_projection, v.eye);
       if (quads && !out) out = !inside_view_volume(projection, v.eye);
     }
@@ -493,13 +494,20 @@ void begin_primitive(GlContext& c, GLenum mode) {
   }
   // Flat quads take a colour from outside their first triangle: those are lit here.
   p.deferred_lighting = c.lighting.enabled && !(c.lighting.shade_model == GL_FLAT && mode == GL_QUADS);
+  // (Flat shading may copy a vertex while drawing: its normals are transformed here.)
+  p.object_normals = p.deferred_lighting && c.lighting.shade_model != GL_FLAT;
+  p.textured = active_texture(c) != nullptr;
 }
 
 void settle_lighting(GlContext& c) {
   Primitive& p = c.prim;
   if (!p.deferred_lighting) return;
-  for (PrimitiveVertex& v : p.vertices) light_vertex(c, v);
+  for (PrimitiveVertex& v : p.vertices) {
+    if (p.object_normals) v.normal = eye_normal(c, v.normal);
+    light_vertex(c, v);
+  }
   p.deferred_lighting = false;
+  p.object_normals = false;
 }
 
 void emit_vertex(GlContext& c, const glm::vec4& object_position) {
@@ -507,10 +515,10 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   if (!is_polygon_mode(p.mode)) return;  // points and lines are accepted but not drawn
   PrimitiveVertex v;
   v.eye = p.modelview * object_position;
-  v.texcoord = texcoord(c, c.current.texcoord);
-  if (c.lighting.enabled) v.normal = eye_normal(c, c.current.normal);
+  v.texcoord = p.textured ? texcoord(c, c.current.texcoord) : glm::vec2(0.0f);
   // The pipeline lights at xyz, this path at xyz / w: a vertex with w != 1 ends the deferral.
   if (p.deferred_lighting && v.eye.w != 1.0f) settle_lighting(c);
+  if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v);
   p.vertices.push_back(v);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
