@@ -90,7 +90,8 @@ void array_element(GlContext& c, std::size_t i) {
 // A whole primitive from array elements. The current attributes and material are restored
 // afterwards: GL leaves them indeterminate, and Mesa leaves them unchanged.
 template <class IndexOf>
-void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of) {
+void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of,
+                   const std::uint32_t* direct = nullptr) {
   if (!usable(c.arrays.vertex)) return;
   const ClientArrays& a = c.arrays;
   const CurrentAttribs& now = c.current;
@@ -122,14 +123,16 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
     }
   };
   auto& sequence = c.array_scratch.sequence;
-  sequence.resize(count);
+  // 32-bit triangle indices are read where they are; others are gathered into `sequence`.
+  const bool read_direct = direct && mode == GL_TRIANGLES;
+  sequence.resize(read_direct ? 0 : count);
   std::uint32_t lo = UINT32_MAX, hi = 0;
   std::mutex bounds;
   auto gather = [&](std::size_t begin, std::size_t end) {  // indices and their range
     std::uint32_t l = UINT32_MAX, h = 0;
     for (std::size_t k = begin; k < end; ++k) {
-      std::uint32_t i = std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
-      sequence[k] = i;
+      std::uint32_t i = read_direct ? direct[k] : std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
+      if (!read_direct) sequence[k] = i;
       l = std::min(l, i), h = std::max(h, i);
     }
     std::lock_guard<std::mutex> lock(bounds);
@@ -138,7 +141,7 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   if (c.pipeline && count >= (1u << 16)) c.pipeline->parallel_for(count, 1u << 15, gather);
   else gather(0, count);
-  if (draw_array_mesh(c, mode, usable(a.color), lo, hi, load)) return;
+  if (draw_array_mesh(c, mode, usable(a.color), count, read_direct ? direct : nullptr, lo, hi, load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);
@@ -233,11 +236,16 @@ void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GL
     }
     if (!indices) return count == 0 ? void() : c.set_error(GL_INVALID_VALUE);
     const auto* bytes = static_cast<const unsigned char*>(indices);
-    draw_elements(c, mode, std::size_t(count), [&](std::size_t k) -> std::size_t {
-      if (type == GL_UNSIGNED_BYTE) return bytes[k];
-      if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
-      return load<GLuint>(bytes + 4 * k);
-    });
+    // Aligned 32-bit indices can be read in place (as triangles, draw_array_mesh).
+    const bool aligned = type == GL_UNSIGNED_INT && reinterpret_cast<std::uintptr_t>(indices) % alignof(shadelab::Triangle) == 0;
+    draw_elements(
+        c, mode, std::size_t(count),
+        [&](std::size_t k) -> std::size_t {
+          if (type == GL_UNSIGNED_BYTE) return bytes[k];
+          if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
+          return load<GLuint>(bytes + 4 * k);
+        },
+        aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
   });
 }
 

@@ -352,8 +352,9 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 
 }  // namespace
 
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint32_t lo,
-                     std::uint32_t hi, const ElementLoader& load) {
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size_t count,
+                     const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
+                     const ElementLoader& load) {
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
@@ -363,7 +364,6 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
     return false;
   }
   ArrayScratch& m = c.array_scratch;
-  const std::size_t count = m.sequence.size();
   begin_primitive(c, mode);  // fixes the transforms and lights as glBegin does
   Primitive& p = c.prim;
   p.active = false;
@@ -386,7 +386,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
     if (c.pipeline && items >= 8192) c.pipeline->parallel_for(items, 4096, fn);
     else fn(0, items);
   };
-  std::atomic<bool> homogeneous{false};
+  std::atomic<bool> homogeneous{false}, nonfinite{false};
   const bool small_projection = bounded(&projection[0][0], 16);
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
     load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], l.enabled ? nullptr : &m.colors[begin],
@@ -396,6 +396,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
       if (eye.w != 1.0f) homogeneous = true;
       m.positions[v] = eye;
       m.finite[v] = finite_clip(projection, small_projection, eye);
+      if (!m.finite[v]) nonfinite = true;
       if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
       else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
       if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
@@ -417,15 +418,18 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   auto add = [&](Triangle tri) {  // NaN or infinite vertices drop their triangles
     if (m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]) m.triangles.push_back(tri);
   };
-  if (mode == GL_TRIANGLES) {  // the common case: no decomposition, the last vertex provokes
+  const std::size_t tris = count / 3;
+  // The caller's 32-bit indices are the triangles, read in place (all in the loaded range).
+  const bool in_place = mode == GL_TRIANGLES && direct && lo == 0 && !nonfinite;
+  if (mode == GL_TRIANGLES && !in_place) {  // no decomposition, the last vertex provokes
     // In parallel; triangles with a non-finite vertex are removed afterwards (rare).
-    std::size_t tris = count / 3;
     m.triangles.resize(tris);
     std::atomic<bool> dropped{false};
+    auto index = [&](std::size_t k) { return direct ? direct[k] : m.sequence[k]; };
     in_parallel(tris, [&](std::size_t begin, std::size_t end) {
       bool drop = false;
       for (std::size_t t = begin; t < end; ++t) {
-        Triangle tri{m.sequence[3 * t] - lo, m.sequence[3 * t + 1] - lo, m.sequence[3 * t + 2] - lo};
+        Triangle tri{index(3 * t) - lo, index(3 * t + 1) - lo, index(3 * t + 2) - lo};
         m.triangles[t] = tri;
         drop = drop || !(m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]);
       }
@@ -436,7 +440,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
         return !(m.finite[tri[0]] && m.finite[tri[1]] && m.finite[tri[2]]);
       });
     }
-  } else {
+  } else if (mode != GL_TRIANGLES) {
     m.pieces.clear();
     decompose(mode, std::uint32_t(count), false, split, m.pieces);
     for (const PrimitiveTriangle& t : m.pieces) {
@@ -448,7 +452,9 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
       add(tri);
     }
   }
-  if (m.triangles.empty() || (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK)) return true;
+  const std::span<const Triangle> triangles =
+      in_place ? std::span<const Triangle>(reinterpret_cast<const Triangle*>(direct), tris) : std::span<const Triangle>(m.triangles);
+  if (triangles.empty() || (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK)) return true;
 
   ShadeState shade;
   shade.lighting = l.enabled;  // lit by the pipeline, once per distinct vertex
@@ -464,7 +470,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint
   in.normals = m.normals;
   in.colors = m.colors;
   in.texcoords = m.texcoords;
-  in.triangles = m.triangles;
+  in.triangles = triangles;
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
   // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.

@@ -51,12 +51,14 @@ class ElementLoader {
 };
 
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
-/// c.array_scratch.sequence holds the draw's element indices (UINT32_MAX for one that does
-/// not fit), lo and hi the smallest and largest; each element in that range is loaded and
-/// transformed once and lit by the pipeline, not once per index. False, with nothing drawn,
-/// when the draw must go vertex by vertex instead (flat quads or polygons, colour material with
-/// a colour array, sparse indices, w != 1).
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::uint32_t lo,
-                     std::uint32_t hi, const ElementLoader& load);
+/// the draw's `count` element indices are `direct` (32-bit indices of GL_TRIANGLES, read in
+/// place) or else c.array_scratch.sequence (UINT32_MAX for one that does not fit), lo and hi
+/// the smallest and largest; each element in that range is loaded and transformed once and
+/// lit by the pipeline, not once per index. False, with nothing drawn, when the draw must go
+/// vertex by vertex instead (flat quads or polygons, colour material with a colour array,
+/// sparse indices, w != 1).
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size_t count,
+                     const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
+                     const ElementLoader& load);
 
 }  // namespace shadelab::gl

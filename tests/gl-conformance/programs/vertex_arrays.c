@@ -1,6 +1,8 @@
 /* Vertex arrays: glDrawArrays on an interleaved array (position, normal, RGBA unsigned-byte
  * colour, with a stride) under lighting and colour material; glDrawElements with
- * GL_UNSIGNED_SHORT indices on separate float arrays (a shared-vertex sphere); glDrawElements
+ * GL_UNSIGNED_INT and GL_UNSIGNED_SHORT indices on separate float arrays (a shared-vertex
+ * sphere in three draws: 32-bit indices from vertex 0, which shadelab reads in place, 32-bit
+ * indices from further on, 16-bit indices); glDrawElements
  * with GL_UNSIGNED_BYTE (GL_QUADS) and GL_UNSIGNED_INT (GL_TRIANGLE_FAN) indices and RGB float
  * colours; glArrayElement between glBegin/glEnd with a texture-coordinate array. */
 #include <math.h>
@@ -19,6 +21,7 @@ static Vertex tri_soup[kSlices * kStacks * 6];
 static GLfloat grid_pos[(kSlices + 1) * (kStacks + 1)][3];
 static GLfloat grid_nrm[(kSlices + 1) * (kStacks + 1)][3];
 static GLushort grid_idx[kSlices * kStacks * 6];
+static GLuint grid_idx32[kSlices * kStacks * 6];
 
 static void unit_point(int i, int j, GLfloat out[3]) {
   double t = 2.0 * CONF_PI * i / kSlices, p = CONF_PI * j / kStacks;
@@ -40,7 +43,7 @@ static void build(void) {
         v->colour[1] = (GLubyte)(60 + 12 * j);
         v->colour[2] = (GLubyte)(250 - 9 * i);
         v->colour[3] = 255;
-        grid_idx[m++] = (GLushort)((j + dj[k]) * (kSlices + 1) + i + di[k]);
+        grid_idx32[m] = (GLuint)((j + dj[k]) * (kSlices + 1) + i + di[k]), grid_idx[m] = (GLushort)grid_idx32[m], ++m;
       }
   for (int j = 0; j <= kStacks; ++j)
     for (int i = 0; i <= kSlices; ++i) {
@@ -147,7 +150,11 @@ int main(int argc, char** argv) {
   glRotatef(-30.0f, 0, 0, 1);
   glScalef(1.0f, 0.7f, 1.0f);
   glEnable(GL_NORMALIZE);
-  glDrawElements(GL_TRIANGLES, kSlices * kStacks * 6, GL_UNSIGNED_SHORT, grid_idx);
+  /* In three draws: GLuint indices from vertex 0, GLuint indices from further on, GLushort. */
+  const int third = kSlices * kStacks * 2;
+  glDrawElements(GL_TRIANGLES, third, GL_UNSIGNED_INT, grid_idx32);
+  glDrawElements(GL_TRIANGLES, third, GL_UNSIGNED_INT, grid_idx32 + third);
+  glDrawElements(GL_TRIANGLES, third, GL_UNSIGNED_SHORT, grid_idx + 2 * third);
   glDisable(GL_NORMALIZE);
   glDisableClientState(GL_NORMAL_ARRAY);
   glDisable(GL_LIGHTING);
