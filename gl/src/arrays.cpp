@@ -130,10 +130,14 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   std::mutex bounds;
   auto gather = [&](std::size_t begin, std::size_t end) {  // indices and their range
     std::uint32_t l = UINT32_MAX, h = 0;
-    for (std::size_t k = begin; k < end; ++k) {
-      std::uint32_t i = read_direct ? direct[k] : std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
-      if (!read_direct) sequence[k] = i;
-      l = std::min(l, i), h = std::max(h, i);
+    if (read_direct) {  // the range only
+      for (std::size_t k = begin; k < end; ++k) l = std::min(l, direct[k]), h = std::max(h, direct[k]);
+    } else {
+      for (std::size_t k = begin; k < end; ++k) {
+        std::uint32_t i = std::uint32_t(std::min<std::size_t>(index_of(k), UINT32_MAX));
+        sequence[k] = i;
+        l = std::min(l, i), h = std::max(h, i);
+      }
     }
     std::lock_guard<std::mutex> lock(bounds);
     lo = std::min(lo, l), hi = std::max(hi, h);

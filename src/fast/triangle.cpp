@@ -23,6 +23,7 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
   if (entry & kBinClipped) {
     const SetupChunk& ch = job.chunks[std::size_t(chunk)];
     const ClippedTriangle& ct = ch.clipped[index];
+    #pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) {
       v[k] = &ch.clip_vertices[ct.v[k]];
       var[k] = &ch.clip_varyings[ct.v[k] * stride];
@@ -31,6 +32,7 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
     return;
   }
   const Triangle& tri = job.in->triangles[index];
+  #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     v[k] = &job.vertices[tri[k]];
     var[k] = &job.varyings[tri[k] * stride];
@@ -70,6 +72,7 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
   if (!pixel_box(job, tx, ty, t)) return false;
   t.depth = detail::depth_plane(t.v[0]->z, t.v[1]->z, t.v[2]->z);
+  #pragma GCC unroll 3
   for (int e = 0; e < 3; ++e) {
     const RasterVertex &p = *t.v[kEdgeFrom[e]], &q = *t.v[kEdgeTo[e]];
     t.ox[e] = p.sx, t.oy[e] = p.sy;
