@@ -62,15 +62,15 @@ HWY_INLINE V3<D> splat3(D d, const float v[3]) {
 ///   since a Gouraud triangle spreads its colour over many pixels: evaluated per vertex in
 ///   the kPerPixel form, the Lok Yau Hall figure, whose dull specular is large at its
 ///   sphere's terminator, differed by 3/255 over ten pixels.
-/// - kPerPixel (per-pixel Phong), within a few float roundings of it: a vector is normalized
-///   by one reciprocal and three products instead of three divisions (zero, infinite and NaN
-///   lengths give the reference's results; only a subnormal length, whose reciprocal
-///   overflows, differs); light x material colours are premultiplied per draw
-///   (LightParams::product); Blinn's n . h for an infinite viewer is
-///   (n . L + n.z) / sqrt(2 + 2 L.z), without forming and normalizing h; dot products and
-///   the attenuation's polynomial are fused multiply-adds where the target has them. A
-///   reciprocal square root estimate with a Newton step in place of the square root measured
-///   no faster.
+/// - kPerPixel (per-pixel Phong, light_per_pixel), within a few float roundings of it: a
+///   vector is normalized by one reciprocal and three products instead of three divisions
+///   (zero, infinite and NaN lengths give the reference's results; only a subnormal length,
+///   whose reciprocal overflows, differs); light x material colours are premultiplied per
+///   draw (LightParams::product) and accumulated by fused multiply-adds; Blinn's n . h for an
+///   infinite viewer is (n . L + n.z) / sqrt(2 + 2 L.z), without forming and normalizing h;
+///   dot products and the attenuation's polynomial are fused multiply-adds where the target
+///   has them. Reciprocal square root and reciprocal estimates with a Newton step in place of
+///   the square roots and divisions measured no faster.
 enum class Form { kReference, kPerPixel };
 
 // len > 0 ? v / len : fallback, with len = glm::length(v).
@@ -165,8 +165,8 @@ HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialPa
   return hn::IfThenElseZero(positive, pow_positive(d, c, m.shininess));
 }
 
-// Direction to the light and attenuation * spot for one light.
-template <Form kForm, class D>
+// Direction to the light and attenuation * spot for one light (the reference form).
+template <class D>
 HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p, V3<D>& to_light) {
   if (!l.positional) {
     to_light = splat3(d, l.pos);
@@ -176,14 +176,9 @@ HWY_INLINE hn::Vec<D> light_direction(D d, const LightParams& l, const V3<D>& p,
               hn::Sub(hn::Set(d, l.pos[2]), p.z)};
   V3<D> zero{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
   hn::Vec<D> dist;
-  to_light = normalize_or<kForm>(d, delta, zero, &dist);
-  hn::Vec<D> denom;
-  if constexpr (kForm == Form::kPerPixel) {  // kc + (kl + kq dist) dist, fused
-    denom = hn::MulAdd(hn::MulAdd(hn::Set(d, l.kq), dist, hn::Set(d, l.kl)), dist, hn::Set(d, l.kc));
-  } else {
-    denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
-                    hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
-  }
+  to_light = normalize_or<Form::kReference>(d, delta, zero, &dist);
+  const hn::Vec<D> denom = hn::Add(hn::Add(hn::Set(d, l.kc), hn::Mul(hn::Set(d, l.kl), dist)),
+                                   hn::Mul(hn::Mul(hn::Set(d, l.kq), dist), dist));
   hn::Vec<D> att = hn::IfThenElseZero(hn::Gt(denom, hn::Zero(d)), hn::Div(hn::Set(d, 1.0f), denom));
   if (!l.spot) return att;
   return hn::Mul(att, spot_lanes(d, l, to_light));
@@ -195,12 +190,6 @@ HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float a[3], const float b[3]) {
   return {hn::Mul(hn::Mul(s, hn::Set(d, a[0])), hn::Set(d, b[0])),
           hn::Mul(hn::Mul(s, hn::Set(d, a[1])), hn::Set(d, b[1])),
           hn::Mul(hn::Mul(s, hn::Set(d, a[2])), hn::Set(d, b[2]))};
-}
-
-// s * p[c] for the three channels (per-pixel lighting's premultiplied colours).
-template <class D>
-HWY_INLINE V3<D> scaled(D d, hn::Vec<D> s, const float p[3]) {
-  return {hn::Mul(s, hn::Set(d, p[0])), hn::Mul(s, hn::Set(d, p[1])), hn::Mul(s, hn::Set(d, p[2]))};
 }
 
 // lighting.cpp's clamp01: x > 0 ? min(x, 1) : 0, so NaN and -0 become +0. On x86, Max is
@@ -286,41 +275,32 @@ HWY_INLINE LitOut<D> light_per_pixel(D d, const LightingSetup& s, const Material
           {clamp01(d, spec.x), clamp01(d, spec.y), clamp01(d, spec.z)}};
 }
 
-/// The whole equation for every lane: light_point(model, lights, material, {p, n}).
-template <Form kForm, class D>
-HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialParams& m,
-                                 const LitIn<D>& in) {
-  if constexpr (kForm == Form::kPerPixel) return light_per_pixel(d, s, m, in);
+// The reference form (Form::kReference): light_point's operations in light_point's order.
+template <class D>
+HWY_INLINE LitOut<D> light_reference(D d, const LightingSetup& s, const MaterialParams& m,
+                                     const LitIn<D>& in) {
   V3<D> v{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
   if (s.local_viewer) {
     V3<D> minus_p{hn::Neg(in.p.x), hn::Neg(in.p.y), hn::Neg(in.p.z)};
-    v = normalize_or<kForm>(d, minus_p, v, nullptr);
+    v = normalize_or<Form::kReference>(d, minus_p, v, nullptr);
   }
   V3<D> primary = splat3(d, m.base);
   V3<D> spec{hn::Zero(d), hn::Zero(d), hn::Zero(d)};
   for (const LightParams& l : s.lights) {
     V3<D> to_light;
-    hn::Vec<D> scale = light_direction<kForm>(d, l, in.p, to_light);
-    hn::Vec<D> n_dot_l = kForm == Form::kPerPixel ? dot3_fused(in.n, to_light) : dot3(in.n, to_light);
+    hn::Vec<D> scale = light_direction(d, l, in.p, to_light);
+    hn::Vec<D> n_dot_l = dot3(in.n, to_light);
     // lighting.cpp: diffuse and specular only where n.L > 0 and attenuation * spot > 0.
     auto lit = hn::And(hn::Gt(n_dot_l, hn::Zero(d)), hn::Gt(scale, hn::Zero(d)));
-    V3<D> amb, dif;
-    if constexpr (kForm == Form::kPerPixel) {  // light x material premultiplied
-      amb = scaled(d, scale, l.product[m.side][0]);
-      dif = scaled(d, hn::Mul(scale, n_dot_l), l.product[m.side][1]);
-    } else {
-      amb = scaled(d, scale, m.ambient, l.ambient);
-      dif = scaled(d, hn::Mul(scale, n_dot_l), m.diffuse, l.diffuse);
-    }
+    const V3<D> amb = scaled(d, scale, m.ambient, l.ambient);
+    const V3<D> dif = scaled(d, hn::Mul(scale, n_dot_l), m.diffuse, l.diffuse);
     primary.x = hn::Add(primary.x, hn::Add(amb.x, hn::IfThenElseZero(lit, dif.x)));
     primary.y = hn::Add(primary.y, hn::Add(amb.y, hn::IfThenElseZero(lit, dif.y)));
     primary.z = hn::Add(primary.z, hn::Add(amb.z, hn::IfThenElseZero(lit, dif.z)));
     if (hn::AllFalse(d, lit)) continue;  // adding zeros changes nothing
-    hn::Vec<D> f = specular_lanes<kForm>(d, l, m, in.n, to_light, n_dot_l, v, !s.local_viewer);
+    hn::Vec<D> f = specular_lanes<Form::kReference>(d, l, m, in.n, to_light, n_dot_l, v, !s.local_viewer);
     const hn::Vec<D> spec_scale = hn::Mul(scale, f);
-    V3<D> sp;
-    if constexpr (kForm == Form::kPerPixel) sp = scaled(d, spec_scale, l.product[m.side][2]);
-    else sp = scaled(d, spec_scale, m.specular, l.specular);
+    const V3<D> sp = scaled(d, spec_scale, m.specular, l.specular);
     spec.x = hn::Add(spec.x, hn::IfThenElseZero(lit, sp.x));
     spec.y = hn::Add(spec.y, hn::IfThenElseZero(lit, sp.y));
     spec.z = hn::Add(spec.z, hn::IfThenElseZero(lit, sp.z));
@@ -332,6 +312,17 @@ HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialPara
   }
   return {{clamp01(d, primary.x), clamp01(d, primary.y), clamp01(d, primary.z)},
           {clamp01(d, spec.x), clamp01(d, spec.y), clamp01(d, spec.z)}};
+}
+
+/// The whole equation for every lane: light_point(model, lights, material, {p, n}).
+template <Form kForm, class D>
+HWY_INLINE LitOut<D> light_lanes(D d, const LightingSetup& s, const MaterialParams& m,
+                                 const LitIn<D>& in) {
+  if constexpr (kForm == Form::kPerPixel) {
+    return light_per_pixel(d, s, m, in);
+  } else {
+    return light_reference(d, s, m, in);
+  }
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE
