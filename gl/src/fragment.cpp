@@ -1,6 +1,7 @@
 // Per-fragment state and clearing (GL 1.1 sections 4.1-4.2): glDepthFunc, glDepthMask,
 // glColorMask, glBlendFunc, glStencil*, glCullFace, glFrontFace, glPolygonOffset, glClear*.
-// Stores state; the core pipeline applies it per fragment. glClear writes the framebuffer.
+// Stores state; the core pipeline applies it per fragment. glClear clears the framebuffer,
+// tile by tile: with the pipeline, each tile is cleared by the draw that next draws into it.
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -83,7 +84,7 @@ void clear_color(GlContext& c) {
   const std::uint8_t* px = bytes.data();
   if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
   bool all = mask[0] && mask[1] && mask[2] && mask[3];
-  if (all) {  // whole pixels: one 32-bit store each, vectorized
+  if (all) {  // whole pixels, tile by tile
     std::uint32_t value;
     std::memcpy(&value, px, 4);
     list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color);
