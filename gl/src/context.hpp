@@ -219,7 +219,7 @@ struct UserBuffer {
 /// the whole buffer and draw into a part of it: the rest is neither cleared again nor copied.
 struct TileMap {
   static constexpr std::uint8_t kChanged = 1, kColorClear = 2, kDepthClear = 4;
-  int columns = 0, rows = 0;
+  int columns = 0;
   std::vector<std::uint8_t> flags;  // per tile, row by row from pixel (0, 0)
   std::uint32_t clear_color = 0;    // the pixel of kColorClear tiles (RGBA8 bytes)
   float clear_depth = 0.0f;         // the depth of kDepthClear tiles

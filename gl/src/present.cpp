@@ -66,8 +66,7 @@ void reset_tiles(GlContext& c) {
   constexpr int kSize = PipelineContext::kTileSize;
   TileMap& m = c.tiles;
   m.columns = (c.fb.width + kSize - 1) / kSize;
-  m.rows = (c.fb.height + kSize - 1) / kSize;
-  m.flags.assign(std::size_t(m.columns) * std::size_t(m.rows), 0);
+  m.flags.assign(std::size_t(m.columns) * std::size_t((c.fb.height + kSize - 1) / kSize), 0);
   if (c.pipeline) c.pipeline->pending_clears().tiles.assign(m.flags.size(), 0);
 }
 

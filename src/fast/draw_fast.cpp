@@ -29,16 +29,16 @@ PipelineContext::PendingClears& PipelineContext::pending_clears() { return impl_
 namespace fast {
 namespace {
 
-int tile_count(const Framebuffer& fb) {
-  return ((fb.width + kTileSize - 1) / kTileSize) * ((fb.height + kTileSize - 1) / kTileSize);
-}
+int tile_columns(const Framebuffer& fb) { return (fb.width + kTileSize - 1) / kTileSize; }
+
+int tile_count(const Framebuffer& fb) { return tile_columns(fb) * ((fb.height + kTileSize - 1) / kTileSize); }
 
 // Applies tile `tile`'s pending clear, if any, and resets its flag.
 void clear_tile(Framebuffer& fb, PipelineContext::PendingClears& p, int tile) {
   const std::uint8_t what = p.tiles[std::size_t(tile)];
   if (!what) return;
   p.tiles[std::size_t(tile)] = 0;
-  const int columns = (fb.width + kTileSize - 1) / kTileSize;
+  const int columns = tile_columns(fb);
   const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
   const int x1 = std::min(fb.width, x0 + kTileSize), y1 = std::min(fb.height, y0 + kTileSize);
   auto* color = reinterpret_cast<std::uint32_t*>(fb.color.data());

@@ -117,8 +117,7 @@ HWY_INLINE hn::Vec<Block<DH>> load_rows(DH dh, T* const rows[kRows]) {
   return join_rows(dh, hn::LoadU(dh, rows[0]), hn::LoadU(dh, rows[kRows - 1]));
 }
 
-/// Stores the lanes set in `bits` of each row (whole rows when every lane is set: the
-/// interior of a triangle, without building masks).
+/// Stores the lanes set in `bits` of each row.
 template <class DH, typename T>
 HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const rows[kRows]) {
 #if HWY_TARGET <= HWY_AVX3
@@ -126,8 +125,9 @@ HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const 
   // (which a partly covered block's pattern makes hard to predict).
   #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) hn::BlendedStore(row_of(dh, v, r), mask_of_bits(dh, row_bits(bits, r)), dh, rows[r]);
-  return;
-#endif
+#else
+  // Masks are built from bytes in memory here: whole rows (the interior of a triangle) are
+  // stored plainly, and empty rows not at all.
   constexpr unsigned kAll = (1u << (kRows * hn::MaxLanes(DD()))) - 1u;
   if (bits == kAll && hn::Lanes(DD()) == hn::MaxLanes(DD())) {
     #pragma GCC unroll 4
@@ -139,6 +139,7 @@ HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const 
     std::uint8_t b = std::uint8_t(row_bits(bits, r));
     if (b) hn::BlendedStore(row_of(dh, v, r), mask_of_bits(dh, b), dh, rows[r]);
   }
+#endif
 }
 
 /// A block's barycentric weights: b0, b1 of each row in doubles (exact_varying reads them),
