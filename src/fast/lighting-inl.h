@@ -119,7 +119,16 @@ HWY_INLINE hn::Vec<D> pow_positive(D d, hn::Vec<D> c, float e) {
     }
     return power;
   }
-  return hn::Exp(d, hn::Mul(hn::Set(d, e), hn::Log(d, c)));
+  // Highway's Exp holds for arguments up to 88; past that the power overflows or nearly
+  // does, as std::pow's does (a shininess of 109 on a normal of length 2 without
+  // GL_NORMALIZE: n . h up to 8). The power is exp(t - 88) exp(88) there, and infinite once
+  // t passes 89 (exp(89) is past the largest float): the reference's colour then clamps to 1
+  // where a wrong finite value (or NaN) would make it black.
+  const hn::Vec<D> t = hn::Mul(hn::Set(d, e), hn::Log(d, c));
+  const auto high = hn::Gt(t, hn::Set(d, 88.0f));
+  hn::Vec<D> power = hn::Exp(d, hn::IfThenElse(high, hn::Sub(t, hn::Set(d, 88.0f)), t));
+  power = hn::IfThenElse(high, hn::Mul(power, hn::Set(d, 1.6516363e38f)), power);  // exp(88)
+  return hn::IfThenElse(hn::Gt(t, hn::Set(d, 89.0f)), hn::Inf(d), power);
 }
 
 // lighting.cpp's spot_factor for a positional light with a cone.

@@ -150,6 +150,39 @@ TEST(FastDifferential, CoverageCountsAreIdentical) {
   }
 }
 
+// Specular powers past the largest float: normals of length 2 to 3 (as GL draws them without
+// GL_NORMALIZE) make the specular cosine exceed 1, and a shininess that is not a whole number
+// takes exp(e log c), whose argument then passes Highway's Exp range. The reference's
+// std::pow overflows to infinity and the colour clamps to 1; the fast pipeline must too,
+// per vertex and per pixel (it made those vertices black).
+TEST(FastDifferential, OverflowingSpecularPowersMatchTheReference) {
+  PipelineContext two(2);
+  int lit = 0;
+  for (unsigned seed = 5000; seed < 5080; ++seed) {
+    RandomDraws random(seed);
+    glm::ivec2 size = random.size();
+    Framebuffer initial = random.framebuffer(size);
+    RandomDraw d = random.draw(size);
+    d.shade.lighting = true;
+    d.shade.shading = seed % 2 ? ShadingMode::kPhong : ShadingMode::kGouraud;
+    d.shade.texture = nullptr;
+    d.frag.capture = nullptr;
+    d.frag.stencil.enabled = false;
+    d.capture = false;
+    d.shadow_maps.clear();
+    d.shade.shadow_maps = {};
+    d.shade.front.shininess = d.shade.back.shininess = 109.25f;
+    d.shade.front.specular = d.shade.back.specular = glm::vec4(0.5f, 0.25f, 0.75f, 1.0f);
+    d.normals.resize(d.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    for (glm::vec3& n : d.normals) n = glm::normalize(n + glm::vec3(0.0f, 0.0f, 1e-3f)) * random.uniform(2.0f, 3.0f);
+    Result ref = render(initial, {d}, nullptr);
+    Result fast = render(initial, {d}, &two);
+    lit += ref.stats.pixels_shaded > 0;
+    EXPECT_EQ(compare_buffers(fast.fb, ref.fb), "") << "seed " << seed;
+  }
+  EXPECT_GT(lit, 30);
+}
+
 // Varyings that are not finite (an infinite or NaN normal, eye positions whose differences
 // overflow) take the reference's own arithmetic in the fast path: per-pixel Phong draws with
 // such vertices still match it.
