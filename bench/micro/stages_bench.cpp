@@ -10,6 +10,7 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -82,11 +83,16 @@ struct Mesh {
   }
 };
 
-// Fills the context's job for one draw as draw_fast.cpp does, and sizes the vertex outputs.
+// Fills the context's first job for one draw as draw_fast.cpp does, and sizes the vertex outputs.
 fast::DrawJob& prepare_job(PipelineContext& ctx, Framebuffer& fb, const FragmentState& frag,
                            const ShadeState& shade, const VertexInput& in) {
-  fast::DrawJob& job = ctx.impl().job;
+  std::vector<std::unique_ptr<fast::DrawJob>>& jobs = ctx.impl().jobs;
+  if (jobs.empty()) jobs.push_back(std::make_unique<fast::DrawJob>());
+  fast::DrawJob& job = *jobs[0];
   job.fb = &fb;
+  job.fb_width = fb.width;
+  job.fb_height = fb.height;
+  job.triangles = in.triangles;
   job.frag = &frag;
   job.shade = &shade;
   job.in = &in;
@@ -224,7 +230,7 @@ void BM_Fill(benchmark::State& state, Fill mode) {
   RenderStats stats;  // warm-up draw: sizes the context's buffers, checks every pixel is drawn
   draw_triangles(fb, projection, viewport, frag, shade, in, &stats, &ctx);
   if (stats.pixels_shaded != std::uint64_t(kWidth) * kHeight) state.SkipWithError("not every pixel was drawn");
-  if (ctx.impl().job.plan.scalar_fragments) state.SkipWithError("fragments took the scalar path");
+  if (ctx.impl().jobs[0]->plan.scalar_fragments) state.SkipWithError("fragments took the scalar path");
   for (auto _ : state) {
     draw_triangles(fb, projection, viewport, frag, shade, in, nullptr, &ctx);
     benchmark::DoNotOptimize(fb.color.data());

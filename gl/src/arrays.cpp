@@ -142,7 +142,7 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
     std::lock_guard<std::mutex> lock(bounds);
     lo = std::min(lo, l), hi = std::max(hi, h);
   };
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   if (c.pipeline && count >= (1u << 16)) c.pipeline->parallel_for(count, 1u << 15, gather);
   else gather(0, count);
   if (draw_array_mesh(c, mode, usable(a.color), count, read_direct ? direct : nullptr, lo, hi, load)) return;

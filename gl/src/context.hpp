@@ -305,10 +305,15 @@ void outside_begin_end(F&& f) noexcept {
   });
 }
 
+/// Makes the context's pipeline at first use, drawing deferred (PipelineContext::set_deferred:
+/// a frame's draws are rasterized tile by tile when something reads the framebuffer); none
+/// with use_reference.
+void make_pipeline(GlContext& c);
 /// Copies the tiles changed since the last copy into the caller's buffer (present.cpp).
 void present(GlContext& c);
-/// Applies the clears left to the draws (PipelineContext::PendingClears) now: before anything
-/// but a draw through the pipeline reads or writes the framebuffer.
+/// Rasterizes the deferred draws and applies the clears left to the draws
+/// (PipelineContext::PendingClears) now: before anything but a draw through the pipeline reads
+/// or writes the framebuffer.
 void settle_clears(GlContext& c);
 /// Sizes the tile map for the framebuffer: nothing changed, nothing known cleared, nothing
 /// pending.

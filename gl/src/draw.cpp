@@ -260,7 +260,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   if (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK) return;  // every polygon culled
   if (count < 3) return;
   const glm::mat4& projection = c.projection.top();
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   // Per vertex, on the pipeline's threads when there are many: the draw's arrays, whether
   // its clip coordinates are finite and, for quads, whether it lies in the view volume.
   Batch batch(c.immediate_scratch, count);
@@ -319,7 +319,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   }
   if (shade.texture) in.texcoords = batch.s.texcoords;
   in.triangles = batch.s.triangles;
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
   if (c.pipeline) mark_drawn(c);
@@ -380,7 +380,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size
   m.raw_texcoords.resize(texture ? n : 0);
   m.finite.resize(n);
   const glm::mat4& projection = c.projection.top();
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   // Ranges of vertices on the pipeline's threads (the loader only reads the arrays).
   auto in_parallel = [&](std::size_t items, const auto& fn) {
     if (c.pipeline && items >= 8192) c.pipeline->parallel_for(items, 4096, fn);

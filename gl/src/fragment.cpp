@@ -28,12 +28,13 @@ bool is_blend_factor(GLenum f) {
 
 float clamp01(float v) { return v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
 
-// Runs fn over ranges of the framebuffer's pixels, on the pipeline's threads when it has
-// them (a full-HD clear writes 18 MB).
+// Runs fn over ranges of the framebuffer's pixels (after the deferred draws), on the
+// pipeline's threads when it has them (a full-HD clear writes 18 MB).
 template <class Fn>
 void for_pixels(GlContext& c, const Fn& fn) {
   std::size_t n = std::size_t(c.fb.width) * std::size_t(c.fb.height);
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
+  if (c.pipeline) c.pipeline->finish_draws();  // they come first
   if (c.pipeline && n >= (1u << 16)) c.pipeline->parallel_for(n, 1u << 15, fn);
   else fn(0, n);
 }
@@ -60,6 +61,7 @@ void list_tiles_to_clear(GlContext& c, std::uint8_t flag, bool same_value) {
 template <class T>
 void clear_listed_tiles(GlContext& c, std::uint8_t what, T* buffer, T value) {
   if (c.pipeline) {
+    c.pipeline->finish_draws();  // draws made before the clear: before it in every tile
     PipelineContext::PendingClears& p = c.pipeline->pending_clears();
     p.tiles.resize(c.tiles.flags.size());  // zeroed with the tile map (reset_tiles)
     if constexpr (std::is_same_v<T, float>) p.depth = value;
@@ -82,7 +84,7 @@ void clear_color(GlContext& c) {
   const auto& mask = c.raster.color_mask;
   const std::array<std::uint8_t, 4> bytes = Framebuffer::color_bytes(c.raster.clear_color);  // the core's rounding
   const std::uint8_t* px = bytes.data();
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   bool all = mask[0] && mask[1] && mask[2] && mask[3];
   if (all) {  // whole pixels, tile by tile
     std::uint32_t value;
@@ -107,7 +109,7 @@ void clear_color(GlContext& c) {
 // Tiles that still hold the same clear depth are left as they are.
 void clear_depth(GlContext& c) {
   float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
-  if (!c.pipeline && !c.use_reference) c.pipeline = std::make_unique<PipelineContext>();
+  make_pipeline(c);
   list_tiles_to_clear(c, TileMap::kDepthClear, std::bit_cast<std::uint32_t>(d) == std::bit_cast<std::uint32_t>(c.tiles.clear_depth));
   c.tiles.clear_depth = d;
   clear_listed_tiles(c, PipelineContext::PendingClears::kDepth, c.fb.depth.data(), d);

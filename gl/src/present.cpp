@@ -58,6 +58,12 @@ void stream_copy(unsigned char* dst, const unsigned char* src, std::size_t n) {
 
 }  // namespace
 
+void make_pipeline(GlContext& c) {
+  if (c.pipeline || c.use_reference) return;
+  c.pipeline = std::make_unique<PipelineContext>();
+  c.pipeline->set_deferred(true);
+}
+
 void settle_clears(GlContext& c) {
   if (c.pipeline) c.pipeline->apply_pending_clears(c.fb);
 }
@@ -95,6 +101,7 @@ void mark_all_changed(GlContext& c) {
 void present(GlContext& c) {
   const UserBuffer& u = c.user;
   if (!u.data) return;
+  if (c.pipeline) c.pipeline->finish_draws();  // pending clears stay pending
   TileMap& m = c.tiles;
   const Swizzle s = swizzle_of(u.format);
   // Tiles holding nothing but the clear colour are filled with it in the caller's format

@@ -183,14 +183,34 @@ class PipelineContext {
   /// (0, 0), (width + kTileSize - 1) / kTileSize to a row.
   static constexpr int kTileSize = 64;
   /// The tiles the last draw_triangles through this context may have written to (those its
-  /// triangles reached, in increasing order); no pixel outside them changed.
+  /// triangles reached, in increasing order), or will write to when it is deferred; no pixel
+  /// outside them changed.
   std::span<const int> last_draw_tiles() const;
+  /// Deferred drawing, llvmpipe's way (off by default; the GL library turns it on). While on,
+  /// draw_triangles through this context transforms, lights, sets up and bins a draw's
+  /// triangles when called and leaves rasterizing them to finish_draws, which draws every
+  /// waiting draw tile by tile: in each tile, every draw's triangles in submission order,
+  /// while the tile is in the cache. A frame's draws then pass over the framebuffer once
+  /// rather than once each; the pixels are the same. A draw waits only when nothing it reads
+  /// stays the caller's after the call (no texture, shadow maps or fragment capture), no
+  /// counts are asked of it (stats null), and it and the queue are small (a long draw pays for
+  /// its own pass); any other draw first finishes the waiting ones. Call finish_draws (or
+  /// apply_pending_clears, which calls it) before anything else reads or writes the
+  /// framebuffer, and before it is resized or destroyed. Turning it off finishes the waiting
+  /// draws.
+  void set_deferred(bool on);
+  /// Rasterizes every waiting draw (set_deferred), applying the pending clears of the tiles
+  /// they reach.
+  void finish_draws();
+  /// How many draws wait for finish_draws.
+  std::size_t deferred_draws() const;
   /// Clears left to the draws, as llvmpipe does (the GL library's glClear): a tile flagged in
   /// `tiles` is cleared (colour to `color` with kColor, depth to `depth` with kDepth) by the
   /// next draw_triangles through this context that draws into it, just before its first
   /// triangle, while the tile is in the cache; its flag is then reset. Whoever flags tiles
   /// sizes `tiles` to the framebuffer's and calls apply_pending_clears before anything else
-  /// reads or writes the framebuffer. Empty: nothing pending.
+  /// reads or writes the framebuffer; tiles are flagged only while no draw waits (call
+  /// finish_draws first: waiting draws come before the clear). Empty: nothing pending.
   struct PendingClears {
     static constexpr std::uint8_t kColor = 1, kDepth = 2;
     std::vector<std::uint8_t> tiles;
@@ -198,7 +218,8 @@ class PipelineContext {
     float depth = 1.0f;
   };
   PendingClears& pending_clears();
-  /// Applies every pending clear to `fb` now, on the context's threads.
+  /// Finishes the waiting draws, then applies every pending clear to `fb` now, on the
+  /// context's threads.
   void apply_pending_clears(Framebuffer& fb);
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that

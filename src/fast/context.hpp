@@ -2,6 +2,8 @@
 // output, bins, per-thread scratch), so that drawing in steady state allocates nothing.
 #pragma once
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "fast/draw_job.hpp"
@@ -13,9 +15,15 @@ namespace shadelab {
 struct PipelineContext::Impl {
   explicit Impl(int threads) : pool(threads), workers(std::size_t(threads)) {}
   fast::ThreadPool pool;
-  fast::DrawJob job;
+  /// Draw jobs, reused from draw to draw and frame to frame: jobs[0, queued) are the deferred
+  /// draws waiting for finish_draws, in submission order; the next draw fills jobs[queued].
+  std::vector<std::unique_ptr<fast::DrawJob>> jobs;
+  std::size_t queued = 0;
+  std::size_t queued_vertices = 0;  ///< the deferred draws' vertices, together
+  bool deferred = false;            ///< set_deferred
   std::vector<fast::WorkerScratch> workers;  ///< one per pool thread
-  std::vector<int> tiles;                    ///< the current draw's non-empty tiles
+  std::vector<int> tiles;                    ///< the last draw's non-empty tiles
+  std::vector<std::vector<const fast::DrawJob*>> tile_jobs;  ///< finish_draws: per tile, its draws
   PendingClears pending;                     ///< clears left to the draws
 };
 

@@ -1,11 +1,17 @@
 // One draw through the fast pipeline: plan, vertex stage over blocks of vertices, setup over
 // contiguous triangle chunks (so each tile's bins keep submission order), then the non-empty
-// tiles rasterized by whichever thread is free. Every stage runs on the context's pool.
+// tiles rasterized by whichever thread is free; or, deferred, the rasterization left to
+// finish_draws, which draws the tiles of every waiting draw together. Every stage runs on the
+// context's pool.
 #include "fast/draw_fast.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "fast/context.hpp"
 #include "fast/plan.hpp"
@@ -58,6 +64,7 @@ bool pending_for(const PipelineContext::PendingClears& p, const Framebuffer& fb)
 }  // namespace fast
 
 void PipelineContext::apply_pending_clears(Framebuffer& fb) {
+  finish_draws();
   PendingClears& p = impl_->pending;
   if (!fast::pending_for(p, fb)) return;
   parallel_for(p.tiles.size(), 16, [&](std::size_t begin, std::size_t end) {
@@ -88,6 +95,16 @@ double ms_since(Clock::time_point t) {
 constexpr std::size_t kVertexBlock = 2048;   // vertices per vertex-stage work item
 constexpr std::size_t kParallelSetup = 4096;  // fewer triangles are set up on one thread
 
+// Deferred drawing's bounds. A draw with more triangles or vertices draws at once (after the
+// waiting ones): it is long enough to pay for its own pass over the framebuffer, and its
+// triangle indices would have to be copied. The queue's memory stays bounded by its vertex
+// count (the vertex stage's output, 48 bytes and more a vertex) and its draw count (every
+// draw keeps a bin per tile); a full queue is drawn before the next draw joins it.
+constexpr std::size_t kMaxDeferredTriangles = std::size_t(1) << 16;
+constexpr std::size_t kMaxDeferredVertices = std::size_t(1) << 17;
+constexpr std::size_t kMaxQueuedVertices = std::size_t(1) << 20;
+constexpr std::size_t kMaxQueuedDraws = 64;
+
 // Window coordinates stay within the viewport (up to rounding) after clipping; these bounds
 // keep snapped coordinates in 32 bits and edge functions below 2^53 (exact in doubles).
 bool in_fixed_point_range(const Framebuffer& fb, const Viewport& vp) {
@@ -97,8 +114,7 @@ bool in_fixed_point_range(const Framebuffer& fb, const Viewport& vp) {
          std::labs(long(vp.y)) + vp.height <= kMaxCoordinate;
 }
 
-void vertex_stage(PipelineContext::Impl& impl) {
-  DrawJob& job = impl.job;
+void vertex_stage(PipelineContext::Impl& impl, DrawJob& job) {
   const std::size_t n = job.in->positions.size();
   job.vertices.resize(n);
   job.outcodes.resize(n);
@@ -110,9 +126,8 @@ void vertex_stage(PipelineContext::Impl& impl) {
   });
 }
 
-void setup_stage(PipelineContext::Impl& impl) {
-  DrawJob& job = impl.job;
-  const std::size_t n = job.in->triangles.size();
+void setup_stage(PipelineContext::Impl& impl, DrawJob& job) {
+  const std::size_t n = job.triangles.size();
   job.tiles_x = (job.fb->width + kTileSize - 1) / kTileSize;
   job.tiles_y = (job.fb->height + kTileSize - 1) / kTileSize;
   const std::size_t tiles = std::size_t(job.tiles_x) * std::size_t(job.tiles_y);
@@ -135,6 +150,96 @@ void setup_stage(PipelineContext::Impl& impl) {
   }
 }
 
+PixelTarget framebuffer_target(Framebuffer& fb) {
+  return {fb.depth.data(), reinterpret_cast<std::uint32_t*>(fb.color.data()), std::size_t(fb.width), 0, 0};
+}
+
+// Copies `bytes` from a 16-byte aligned `src` to `dst` with streaming stores where the
+// target has them and dst is aligned for them: a tile's lines are written whole and not read
+// again soon, so they need not be read into the cache first. memcpy otherwise.
+void stream_out(void* dst, const void* src, std::size_t bytes) {
+#if defined(__SSE2__)
+  if ((reinterpret_cast<std::uintptr_t>(dst) & 15u) == 0 && bytes % 16 == 0) {
+    auto* d = static_cast<__m128i*>(dst);
+    const auto* s = static_cast<const __m128i*>(src);
+    for (std::size_t i = 0; i < bytes / 16; ++i) _mm_stream_si128(d + i, _mm_load_si128(s + i));
+    return;
+  }
+#endif
+  std::memcpy(dst, src, bytes);
+}
+
+// Draws tile `tile` of every job in `jobs`, in order, on one thread. A tile with a pending
+// clear, wholly inside the framebuffer and drawn on the SIMD path alone, is drawn in the
+// worker's tile buffer: its cleared parts made there, the others copied in, the draws made
+// in the cache, and the tile written out once with streaming stores. Clearing it in the
+// framebuffer would first read every line of it from memory (the stores of a clear fetch the
+// lines they write), and evict it again when the next tile is drawn. Any other tile is
+// cleared in place (when pending) and drawn in the framebuffer.
+template <class Jobs>
+void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Jobs& jobs, WorkerScratch& ws) {
+  PipelineContext::PendingClears& p = impl.pending;
+  const std::uint8_t what = pending_for(p, fb) ? p.tiles[std::size_t(tile)] : 0;
+  const int columns = tile_columns(fb);
+  const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
+  bool buffered = what != 0 && x0 + kTileSize <= fb.width && y0 + kTileSize <= fb.height;
+  for (const DrawJob* job : jobs) buffered = buffered && !job->plan.scalar_fragments;
+  if (!buffered) {
+    if (what) clear_tile(fb, p, tile);
+    ws.target = framebuffer_target(fb);
+    for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
+    return;
+  }
+  p.tiles[std::size_t(tile)] = 0;
+  if (!ws.tile) ws.tile = std::make_unique<TileBuffer>();
+  TileBuffer& b = *ws.tile;
+  const std::size_t width = std::size_t(fb.width);
+  auto* color = reinterpret_cast<std::uint32_t*>(fb.color.data());
+  for (int r = 0; r < kTileSize; ++r) {
+    const std::size_t row = std::size_t(y0 + r) * width + std::size_t(x0);
+    std::uint32_t* c = b.color + r * kTileSize;
+    float* d = b.depth + r * kTileSize;
+    if (what & PipelineContext::PendingClears::kColor) std::fill_n(c, kTileSize, p.color);
+    else std::memcpy(c, color + row, kTileSize * sizeof(std::uint32_t));
+    if (what & PipelineContext::PendingClears::kDepth) std::fill_n(d, kTileSize, p.depth);
+    else std::memcpy(d, &fb.depth[row], kTileSize * sizeof(float));
+  }
+  ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0};
+  for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
+  for (int r = 0; r < kTileSize; ++r) {
+    const std::size_t row = std::size_t(y0 + r) * width + std::size_t(x0);
+    stream_out(color + row, b.color + r * kTileSize, kTileSize * sizeof(std::uint32_t));
+    stream_out(&fb.depth[row], b.depth + r * kTileSize, kTileSize * sizeof(float));
+  }
+#if defined(__SSE2__)
+  _mm_sfence();  // the streaming stores are seen by whoever reads the framebuffer next
+#endif
+}
+
+// Rasterizes `tiles` (indices of framebuffer tiles) with draw_tile, each by whichever
+// thread is free; jobs_of(tile) names the draws to make in it. Tiles are claimed alternately
+// from the first and the second half of the list, so that threads do not draw side by side:
+// the framebuffer's rows need not start on a cache line (a vector's storage is 16-byte
+// aligned), so two tiles next to each other share a line in every row, and two threads
+// writing them pass those lines back and forth (the full-screen Gouraud fill ran no faster
+// on two threads than on one, claiming tiles in order).
+template <class JobsOf>
+void raster_tiles(PipelineContext::Impl& impl, Framebuffer& fb, std::span<const int> tiles, const JobsOf& jobs_of) {
+  const std::size_t half = (tiles.size() + 1) / 2;
+  impl.pool.run(int(tiles.size()), [&](int i, int worker) {
+    const int tile = tiles[(std::size_t(i) % 2) * half + std::size_t(i) / 2];
+    draw_tile(impl, fb, tile, jobs_of(tile), impl.workers[std::size_t(worker)]);
+  });
+}
+
+// Whether a draw may wait for finish_draws: nothing it reads may change or end before then
+// (a texture, shadow maps and a capture are the caller's), and its counts are not asked for.
+bool deferrable(const PipelineContext::Impl& impl, const FragmentState& frag, const ShadeState& shade,
+                const VertexInput& in, const RenderStats* stats) {
+  return impl.deferred && !stats && !frag.capture && !shade.texture && shade.shadow_maps.empty() &&
+         in.triangles.size() <= kMaxDeferredTriangles && in.positions.size() <= kMaxDeferredVertices;
+}
+
 void add_counts(RenderStats& to, const RenderStats& from) {
   to.triangles_in += from.triangles_in;
   to.triangles_culled += from.triangles_culled;
@@ -147,6 +252,39 @@ void add_counts(RenderStats& to, const RenderStats& from) {
 }  // namespace
 
 }  // namespace fast
+
+void PipelineContext::set_deferred(bool on) {
+  if (!on) finish_draws();
+  impl_->deferred = on;
+}
+
+std::size_t PipelineContext::deferred_draws() const { return impl_->queued; }
+
+void PipelineContext::finish_draws() {
+  Impl& impl = *impl_;
+  if (impl.queued == 0) return;
+  const fast::DrawJob& first = *impl.jobs[0];
+  if (first.fb->width != first.fb_width || first.fb->height != first.fb_height) {
+    impl.queued = impl.queued_vertices = 0;  // resized under the queue (against the contract):
+    return;                                  // its tiles are no longer the framebuffer's
+  }
+  const std::size_t tiles = std::size_t(first.tiles_x) * std::size_t(first.tiles_y);
+  if (impl.tile_jobs.size() < tiles) impl.tile_jobs.resize(tiles);
+  for (std::size_t t = 0; t < tiles; ++t) impl.tile_jobs[t].clear();
+  for (std::size_t j = 0; j < impl.queued; ++j) {
+    for (int t : impl.jobs[j]->tiles) impl.tile_jobs[std::size_t(t)].push_back(impl.jobs[j].get());
+  }
+  impl.tiles.clear();
+  for (std::size_t t = 0; t < tiles; ++t) {
+    if (!impl.tile_jobs[t].empty()) impl.tiles.push_back(int(t));
+  }
+  fast::raster_tiles(impl, *first.fb, impl.tiles, [&](int tile) -> const std::vector<const fast::DrawJob*>& {
+    return impl.tile_jobs[std::size_t(tile)];
+  });
+  impl.tiles.assign(impl.jobs[impl.queued - 1]->tiles.begin(), impl.jobs[impl.queued - 1]->tiles.end());
+  impl.queued = 0;
+  impl.queued_vertices = 0;
+}
 
 void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
                                  const glm::mat4& projection, const Viewport& viewport,
@@ -164,40 +302,59 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
   // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
   ShadeState effective = shade;
   if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
-  fast::DrawJob& job = impl.job;
+  const bool defer = fast::deferrable(impl, fragment, effective, in, stats_out);
+  // Deferred draws wait in the queue while it has room; anything else draws after them.
+  if (impl.queued > 0 && (!defer || impl.queued == fast::kMaxQueuedDraws || impl.jobs[0]->fb != &fb ||
+                          impl.queued_vertices + in.positions.size() > fast::kMaxQueuedVertices)) {
+    context.finish_draws();
+  }
+  if (impl.jobs.size() <= impl.queued) impl.jobs.push_back(std::make_unique<fast::DrawJob>());
+  fast::DrawJob& job = *impl.jobs[impl.queued];
   job.fb = &fb;
-  job.frag = &fragment;
-  job.shade = &effective;
+  job.fb_width = fb.width;
+  job.fb_height = fb.height;
+  job.shade_copy = effective;
+  job.shade = &job.shade_copy;
   job.in = &in;
+  job.triangles = in.triangles;
+  job.frag = &fragment;
+  if (defer) {  // owns what it reads after returning
+    job.frag_copy = fragment;
+    job.frag = &job.frag_copy;
+    job.light_copy.assign(shade.lights.begin(), shade.lights.end());
+    job.shade_copy.lights = job.light_copy;
+    job.triangle_copy.resize(in.triangles.size());
+    std::copy(in.triangles.begin(), in.triangles.end(), job.triangle_copy.begin());
+    job.triangles = job.triangle_copy;
+  }
   job.projection = projection;
   job.viewport = viewport;
   fast::make_plan(job);
   for (fast::WorkerScratch& w : impl.workers) w.stats = RenderStats{};
 
   auto t0 = fast::Clock::now();
-  fast::vertex_stage(impl);
+  fast::vertex_stage(impl, job);
   if (job.plan.vertex_lighting) stats.vertices_lit += in.positions.size() * (job.plan.two_side ? 2 : 1);
   stats.ms_vertex += fast::ms_since(t0);
 
   auto t1 = fast::Clock::now();
-  fast::setup_stage(impl);
-  // Tiles are claimed alternately from the first and the second half of the list, so that
-  // threads do not draw side by side: the framebuffer's rows need not start on a cache line
-  // (a vector's storage is 16-byte aligned), so two tiles next to each other share a line in
-  // every row, and two threads writing them pass those lines back and forth (the full-screen
-  // Gouraud fill ran no faster on two threads than on one, claiming tiles in order).
-  // A tile's pending clear is applied by the thread that draws it, just before drawing.
-  const std::size_t tiles = impl.tiles.size(), half = (tiles + 1) / 2;
-  const bool pending = fast::pending_for(impl.pending, fb);
-  impl.pool.run(int(tiles), [&](int i, int worker) {
-    const std::size_t k = (std::size_t(i) % 2) * half + std::size_t(i) / 2;
-    if (pending) fast::clear_tile(fb, impl.pending, impl.tiles[k]);
-    fast::raster_tile(job, impl.tiles[k], impl.workers[std::size_t(worker)]);
-  });
+  fast::setup_stage(impl, job);
+  job.in = nullptr;
   for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(stats, job.chunks[std::size_t(c)].stats);
+  if (defer) {
+    job.tiles.assign(impl.tiles.begin(), impl.tiles.end());
+    ++impl.queued;
+    impl.queued_vertices += in.positions.size();
+    stats.ms_raster += fast::ms_since(t1);
+    return;
+  }
+  const fast::DrawJob* const only[1] = {&job};
+  fast::raster_tiles(impl, fb, impl.tiles, [&](int) { return std::span<const fast::DrawJob* const>(only); });
   for (const fast::WorkerScratch& w : impl.workers) fast::add_counts(stats, w.stats);
   stats.ms_raster += fast::ms_since(t1);
-  job.shade = nullptr;  // `effective` ends here
+  job.frag = nullptr;  // the caller's, as are the lights of shade_copy and the triangles
+  job.shade_copy.lights = {};
+  job.triangles = {};
 }
 
 }  // namespace shadelab

@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -97,19 +99,48 @@ struct SetupChunk {
   RenderStats stats;
 };
 
+/// Where the SIMD path reads and writes the pixels of blocks wholly inside the framebuffer:
+/// pixel (x, y) at index (y - y0) * stride + (x - x0) of `depth` and `color` (RGBA8 as one
+/// word). The framebuffer itself, or a worker's tile buffer (draw_fast.cpp: a cleared tile is
+/// drawn in the cache and written out once). Blocks touching the framebuffer's edge and the
+/// per-fragment reference path always use the framebuffer.
+struct PixelTarget {
+  float* depth = nullptr;
+  std::uint32_t* color = nullptr;
+  std::size_t stride = 0;
+  int x0 = 0, y0 = 0;
+};
+
+/// One tile's colour and depth, rows of kTileSize pixels.
+struct alignas(64) TileBuffer {
+  std::uint32_t color[kTileSize * kTileSize];
+  float depth[kTileSize * kTileSize];
+};
+
 /// Per-worker scratch (vertex stage and rasterizer).
 struct WorkerScratch {
   detail::Attribs attribs[3];     ///< full reference attributes (scalar fragments)
   std::vector<float> visibility;  ///< shadow-map visibility per light (scalar lighting)
+  PixelTarget target;             ///< set before each raster_tile
+  std::unique_ptr<TileBuffer> tile;  ///< made at its first use
   RenderStats stats;
 };
 
-/// Everything one draw's stages read. Filled by draw_fast.cpp.
+/// Everything one draw's stages read. Filled by draw_fast.cpp. A deferred draw (rasterized
+/// later, PipelineContext::set_deferred) owns everything its rasterization reads: its state,
+/// lights and triangles are copied here; `in` is read only while the draw is made.
 struct DrawJob {
   Framebuffer* fb = nullptr;
-  const FragmentState* frag = nullptr;
-  const ShadeState* shade = nullptr;  ///< with an incomplete texture already dropped
-  const VertexInput* in = nullptr;
+  int fb_width = 0, fb_height = 0;      ///< fb's size when the draw was made
+  const FragmentState* frag = nullptr;  ///< the caller's, or frag_copy when deferred
+  const ShadeState* shade = nullptr;  ///< shade_copy: an incomplete texture already dropped
+  const VertexInput* in = nullptr;    ///< null once the draw is set up
+  std::span<const Triangle> triangles;  ///< in->triangles, or triangle_copy when deferred
+  FragmentState frag_copy;
+  ShadeState shade_copy;
+  std::vector<Light> light_copy;  ///< shade_copy.lights when deferred
+  detail::ScratchVector<Triangle> triangle_copy;
+  std::vector<int> tiles;  ///< the tiles this draw's triangles reach (deferred draws)
   glm::mat4 projection{1.0f};
   Viewport viewport;
   DrawPlan plan;

@@ -35,20 +35,22 @@ struct BlockPixels {
   int copied[kRows];         // pixels of the row inside the framebuffer, when copied; else 0
 };
 
-HWY_INLINE void open_block(const DrawJob& job, int x, int y, bool interior, BlockPixels& g) {
-  Framebuffer& fb = *job.fb;
-  const std::size_t width = std::size_t(fb.width);
-  const std::size_t first = std::size_t(y) * width + std::size_t(x);
+HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x, int y, bool interior,
+                           BlockPixels& g) {
   if (interior) {  // every row inside the framebuffer
+    const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
     #pragma GCC unroll 4
     for (int r = 0; r < kRows; ++r) {
-      const std::size_t index = first + std::size_t(r) * width;
-      g.depth[r] = job.frag->depth_test ? &fb.depth[index] : nullptr;
-      g.color[r] = job.plan.writes_color ? reinterpret_cast<std::uint32_t*>(&fb.color[index * 4]) : nullptr;
+      const std::size_t index = first + std::size_t(r) * target.stride;
+      g.depth[r] = job.frag->depth_test ? target.depth + index : nullptr;
+      g.color[r] = job.plan.writes_color ? target.color + index : nullptr;
       g.copied[r] = 0;
     }
     return;
   }
+  Framebuffer& fb = *job.fb;
+  const std::size_t width = std::size_t(fb.width);
+  const std::size_t first = std::size_t(y) * width + std::size_t(x);
   const int lanes = int(hn::Lanes(DD()));
   const int valid = std::min(fb.width - x, lanes);
   #pragma GCC unroll 4
@@ -91,13 +93,13 @@ enum class Path { kInterior, kEdge, kScalar };
 
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour.
 template <Path kPath>
-HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, GroupCounts& counts,
-                           int x, int y, unsigned bits, const VD b0[kRows], const VD b1[kRows], VB f0, VB f1,
-                           VB z) {
+HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                           GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
+                           const VD b1[kRows], VB f0, VB f1, VB z) {
   const DF df;
   const FragmentState& fs = *job.frag;
   BlockPixels g;
-  open_block(job, x, y, kPath == Path::kInterior, g);
+  open_block(job, target, x, y, kPath == Path::kInterior, g);
   unsigned passed = bits;
   if (fs.depth_test) {
     MB live = hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
@@ -174,7 +176,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
   } else {
-    simd_block<kPath>(job, t, planes, counts, x, y, bits, b0, b1, f0, f1, z);
+    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   }
 }
 

@@ -163,7 +163,7 @@ void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
   RenderStats& stats = chunk.stats;
   for (std::size_t t = begin; t < end; ++t) {
     ++stats.triangles_in;
-    const Triangle& tri = job.in->triangles[t];
+    const Triangle& tri = job.triangles[t];
     if (tri[0] >= n || tri[1] >= n || tri[2] >= n) continue;
     std::uint8_t oa = job.outcodes[tri[0]], ob = job.outcodes[tri[1]], oc = job.outcodes[tri[2]];
     if ((oa | ob | oc) != 0) {

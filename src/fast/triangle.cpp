@@ -31,7 +31,7 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
     provoking = ct.provoking;
     return;
   }
-  const Triangle& tri = job.in->triangles[index];
+  const Triangle& tri = job.triangles[index];
   #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
     v[k] = &job.vertices[tri[k]];

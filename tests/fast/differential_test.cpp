@@ -3,6 +3,7 @@
 // target this CPU runs). Coverage, depth and stencil must be identical, colours within 1/255.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <limits>
 #include <sstream>
@@ -148,6 +149,99 @@ TEST(FastDifferential, CoverageCountsAreIdentical) {
     Result fast = render(initial, draws, &three);
     ASSERT_EQ(fast.fb.color, ref.fb.color) << "seed " << seed;
   }
+}
+
+// Deferred drawing (PipelineContext::set_deferred): the draws of a scene wait and are drawn
+// tile by tile at finish_draws, over tiles with pending clears (drawn in a worker's tile
+// buffer when the SIMD path draws them alone). The reference draws the same draws at once
+// over the same framebuffer with those tiles cleared first. Textured, captured and shadowed
+// draws cannot wait and finish the queue in between; long runs of draws fill it.
+TEST(FastDifferential, DeferredDrawsMatchTheReference) {
+  PipelineContext one(1), two(2);
+  one.set_deferred(true);
+  two.set_deferred(true);
+  int buffered_scenes = 0;
+  for (unsigned seed = 4000; seed < 4250; ++seed) {
+    RandomDraws random(seed);
+    glm::ivec2 size = random.size();
+    if (random.chance(0.3)) size = {random.integer(128, 330), random.integer(128, 260)};
+    Framebuffer initial = random.framebuffer(size);
+    std::vector<RandomDraw> draws;
+    const int count = random.chance(0.1) ? random.integer(60, 140) : random.integer(1, 6);
+    for (int i = count; i > 0; --i) draws.push_back(random.draw(size));
+    // Pending clears on some tiles, applied to the reference's framebuffer beforehand.
+    const int columns = (size.x + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize;
+    const int tiles = columns * ((size.y + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize);
+    PipelineContext::PendingClears clears;
+    clears.tiles.resize(std::size_t(tiles));
+    const std::array<std::uint8_t, 4> bytes = {std::uint8_t(random.integer(0, 255)), std::uint8_t(random.integer(0, 255)),
+                                               std::uint8_t(random.integer(0, 255)), std::uint8_t(random.integer(0, 255))};
+    std::memcpy(&clears.color, bytes.data(), 4);
+    clears.depth = random.uniform(0.0f, 1.0f);
+    Framebuffer cleared = initial;
+    for (int t = 0; t < tiles; ++t) {
+      const std::uint8_t what = std::uint8_t(random.integer(0, 3));
+      clears.tiles[std::size_t(t)] = what;
+      const int x0 = (t % columns) * PipelineContext::kTileSize, y0 = (t / columns) * PipelineContext::kTileSize;
+      for (int y = y0; y < std::min(size.y, y0 + PipelineContext::kTileSize); ++y) {
+        for (int x = x0; x < std::min(size.x, x0 + PipelineContext::kTileSize); ++x) {
+          const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+          if (what & PipelineContext::PendingClears::kColor) std::memcpy(&cleared.color[i * 4], bytes.data(), 4);
+          if (what & PipelineContext::PendingClears::kDepth) cleared.depth[i] = clears.depth;
+        }
+      }
+    }
+    buffered_scenes += size.x >= PipelineContext::kTileSize && size.y >= PipelineContext::kTileSize;
+    Result ref = render(cleared, draws, nullptr);
+    for (PipelineContext* ctx : {&one, &two}) {
+      Result fast;
+      fast.fb = initial;
+      fast.capture.pixels.resize(std::size_t(size.x) * std::size_t(size.y));
+      ctx->pending_clears() = clears;
+      std::size_t waited = 0;
+      for (const RandomDraw& d : draws) {
+        FragmentState frag = d.frag;
+        if (d.capture) frag.capture = &fast.capture;
+        VertexInput in = d.input();
+        draw_triangles(fast.fb, d.projection, d.viewport, frag, d.shade, in, nullptr, ctx);
+        waited = std::max(waited, ctx->deferred_draws());
+      }
+      ctx->apply_pending_clears(fast.fb);
+      ASSERT_EQ(ctx->deferred_draws(), 0u);
+      ASSERT_LE(waited, std::size_t(64));
+      const std::string where = "seed " + std::to_string(seed) + " threads " + std::to_string(ctx->threads()) + ": ";
+      ASSERT_EQ(compare_buffers(fast.fb, ref.fb) + compare_captures(fast.capture, ref.capture), "") << where;
+    }
+  }
+  EXPECT_GT(buffered_scenes, 50);
+}
+
+// Draws wait only while deferred drawing is on, and only those that own what they read.
+TEST(FastDifferential, OnlyDrawsThatOwnTheirInputsWait) {
+  PipelineContext ctx(2);
+  RandomDraws random(77);
+  const glm::ivec2 size{96, 80};
+  Framebuffer fb = random.framebuffer(size);
+  RandomDraw d = random.draw(size);
+  d.shade.texture = nullptr;
+  d.frag.capture = nullptr;
+  d.capture = false;
+  d.shadow_maps.clear();
+  d.shade.shadow_maps = {};
+  VertexInput in = d.input();
+  draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+  EXPECT_EQ(ctx.deferred_draws(), 0u);  // off by default
+  ctx.set_deferred(true);
+  draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+  draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+  EXPECT_EQ(ctx.deferred_draws(), 2u);
+  RenderStats stats;  // counts asked for: drawn at once, after the waiting draws
+  draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, &stats, &ctx);
+  EXPECT_EQ(ctx.deferred_draws(), 0u);
+  draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+  EXPECT_EQ(ctx.deferred_draws(), 1u);
+  ctx.set_deferred(false);  // finishes the waiting draw
+  EXPECT_EQ(ctx.deferred_draws(), 0u);
 }
 
 // Specular powers past the largest float: normals of length 2 to 3 (as GL draws them without
