@@ -13,15 +13,23 @@ namespace {
 
 using detail::ClipVertex;
 
+// Twice a triangle's signed window area: signed_area's loop below unrolled, the same sums in
+// the same order. Inlined (as keep is) into the per-triangle loop, which calls nothing else
+// for a culled triangle: as calls, the two took a tenth of the 1M-triangle sphere's frame on
+// one thread.
+[[gnu::always_inline]] inline double triangle_area(const RasterVertex& p, const RasterVertex& q,
+                                                   const RasterVertex& r) {
+  double a = 0.0;
+  a += p.x * q.y - q.x * p.y;
+  a += q.x * r.y - r.x * q.y;
+  a += r.x * p.y - p.x * r.y;
+  return a;
+}
+
 // Twice the signed window area, as draw.cpp's signed_area sums it.
 double signed_area(const RasterVertex* const* v, std::size_t n) {
+  if (n == 3) return triangle_area(*v[0], *v[1], *v[2]);
   double a = 0.0;
-  if (n == 3) {  // the loop below, unrolled: the same sums in the same order
-    a += v[0]->x * v[1]->y - v[1]->x * v[0]->y;
-    a += v[1]->x * v[2]->y - v[2]->x * v[1]->y;
-    a += v[2]->x * v[0]->y - v[0]->x * v[2]->y;
-    return a;
-  }
   for (std::size_t i = 0; i < n; ++i) {
     const RasterVertex& p = *v[i];
     const RasterVertex& q = *v[(i + 1) % n];
@@ -31,7 +39,7 @@ double signed_area(const RasterVertex* const* v, std::size_t n) {
 }
 
 // Facing and culling; false when the polygon is dropped (and counted).
-bool keep(const DrawJob& job, double area, bool& front, RenderStats& stats) {
+[[gnu::always_inline]] inline bool keep(const DrawJob& job, double area, bool& front, RenderStats& stats) {
   if (area == 0.0 || !std::isfinite(area)) {
     ++stats.triangles_culled;
     return false;
@@ -171,10 +179,10 @@ void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
       else setup_clipped(job, chunk, tri);
       continue;
     }
-    const RasterVertex* v[3] = {&job.vertices[tri[0]], &job.vertices[tri[1]], &job.vertices[tri[2]]};
+    const RasterVertex &a = job.vertices[tri[0]], &b = job.vertices[tri[1]], &c = job.vertices[tri[2]];
     bool front = false;
-    if (!keep(job, signed_area(v, 3), front, stats)) continue;
-    bin_triangle(job, chunk, *v[0], *v[1], *v[2], std::uint32_t(t) | (front ? kBinFront : 0));
+    if (!keep(job, triangle_area(a, b, c), front, stats)) continue;
+    bin_triangle(job, chunk, a, b, c, std::uint32_t(t) | (front ? kBinFront : 0));
   }
 }
 
