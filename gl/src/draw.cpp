@@ -548,14 +548,16 @@ void settle_lighting(GlContext& c) {
 void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   Primitive& p = c.prim;
   if (!is_polygon_mode(p.mode)) return;  // points and lines are accepted but not drawn
-  PrimitiveVertex v;
-  v.eye = transform(p.modelview, object_position);
-  v.texcoord = p.textured ? texcoord(c, c.current.texcoord) : glm::vec2(0.0f);
+  const glm::vec4 eye = transform(p.modelview, object_position);
   // The pipeline lights at xyz, this path at xyz / w: a vertex with w != 1 ends the deferral.
-  if (p.deferred_lighting && v.eye.w != 1.0f) settle_lighting(c);
+  if (p.deferred_lighting && eye.w != 1.0f) settle_lighting(c);
+  // Made in place: a vertex built on the stack and copied in was read back in wider pieces
+  // than it was written, a store-forwarding stall per vertex (half of this function's time).
+  PrimitiveVertex& v = p.vertices.emplace_back();
+  v.eye = eye;
+  v.texcoord = p.textured ? texcoord(c, c.current.texcoord) : glm::vec2(0.0f);
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v);
-  p.vertices.push_back(v);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
 }
 
