@@ -70,6 +70,17 @@ std::string compare_captures(const FragmentCapture& fast, const FragmentCapture&
   return "";
 }
 
+// Leaves a random draw only state the fast pipeline's SIMD path draws alone and that the draw
+// does not hold on to: no texture, capture, stencil or shadow maps.
+void simd_only(RandomDraw& d) {
+  d.shade.texture = nullptr;
+  d.frag.capture = nullptr;
+  d.frag.stencil.enabled = false;
+  d.capture = false;
+  d.shadow_maps.clear();
+  d.shade.shadow_maps = {};
+}
+
 // Compares one random scene (seed) on every given context; returns "" when all agree.
 std::string check_seed(unsigned seed, const std::vector<PipelineContext*>& contexts) {
   RandomDraws random(seed);
@@ -223,11 +234,7 @@ TEST(FastDifferential, OnlyDrawsThatOwnTheirInputsWait) {
   const glm::ivec2 size{96, 80};
   Framebuffer fb = random.framebuffer(size);
   RandomDraw d = random.draw(size);
-  d.shade.texture = nullptr;
-  d.frag.capture = nullptr;
-  d.capture = false;
-  d.shadow_maps.clear();
-  d.shade.shadow_maps = {};
+  simd_only(d);
   VertexInput in = d.input();
   draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
   EXPECT_EQ(ctx.deferred_draws(), 0u);  // off by default
@@ -259,12 +266,7 @@ TEST(FastDifferential, OverflowingSpecularPowersMatchTheReference) {
     RandomDraw d = random.draw(size);
     d.shade.lighting = true;
     d.shade.shading = seed % 2 ? ShadingMode::kPhong : ShadingMode::kGouraud;
-    d.shade.texture = nullptr;
-    d.frag.capture = nullptr;
-    d.frag.stencil.enabled = false;
-    d.capture = false;
-    d.shadow_maps.clear();
-    d.shade.shadow_maps = {};
+    simd_only(d);
     d.shade.front.shininess = d.shade.back.shininess = 109.25f;
     d.shade.front.specular = d.shade.back.specular = glm::vec4(0.5f, 0.25f, 0.75f, 1.0f);
     d.normals.resize(d.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
@@ -292,12 +294,7 @@ TEST(FastDifferential, NonFiniteVaryingsMatchTheReference) {
     RandomDraw d = random.draw(size);
     d.shade.lighting = true;
     d.shade.shading = ShadingMode::kPhong;
-    d.shade.texture = nullptr;
-    d.frag.capture = nullptr;
-    d.frag.stencil.enabled = false;
-    d.capture = false;
-    d.shadow_maps.clear();
-    d.shade.shadow_maps = {};
+    simd_only(d);
     d.normals.resize(d.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
     for (std::size_t v = 0; v < d.normals.size(); v += 3) d.normals[v] = glm::vec3(inf, 1.0f, 0.0f);
     for (std::size_t v = 1; v < d.normals.size(); v += 5) d.normals[v] = glm::vec3(0.0f, nan, 1.0f);

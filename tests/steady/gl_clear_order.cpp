@@ -9,23 +9,13 @@
 #include <cstdio>
 #include <vector>
 
+#include "expect_pixel.hpp"
+
 namespace {
 
 constexpr int kW = 150, kH = 90;  // partial tiles on two sides
-int failures = 0;
-
-void expect_pixel(int x, int y, const std::uint8_t want[4], const char* what) {
-  std::uint8_t got[4] = {};
-  glReadPixels(x, y, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, got);
-  for (int c = 0; c < 4; ++c) {
-    if (got[c] != want[c]) {
-      std::printf("FAIL %s: pixel (%d, %d) is %d %d %d %d, expected %d %d %d %d\n", what, x, y, got[0], got[1],
-                  got[2], got[3], want[0], want[1], want[2], want[3]);
-      ++failures;
-      return;
-    }
-  }
-}
+using steady::expect_pixel;
+using steady::failures;
 
 void quad(float z) {
   glBegin(GL_QUADS);
