@@ -120,13 +120,11 @@ const Texture* active_texture(GlContext& c) {
   return &t.bound->texture;
 }
 
-// The eye-space normal GL lights with: inverse transpose of the modelview, then rescaled
-// (GL 1.2 equation 2.1) or normalized when enabled; otherwise left as it is.
 // m * v with glm's operations in glm's order, (m0 x + m1 y) + (m2 z + m3 w), so the same
 // floats; in one SSE register where the target has one. glm's operator*, called from the
 // per-vertex loops, was not inlined: its result went through memory in two halves and was
-// read back whole, a store-forwarding stall per vertex (a sixth of the 1M-triangle sphere's
-// front end).
+// read back whole, a store-forwarding stall per vertex (most of draw_array_mesh's time on
+// the 1M-triangle sphere).
 [[gnu::always_inline]] inline glm::vec4 transform(const glm::mat4& m, const glm::vec4& v) {
 #if defined(__SSE2__)
   const __m128 x = _mm_set1_ps(v.x), y = _mm_set1_ps(v.y), z = _mm_set1_ps(v.z), w = _mm_set1_ps(v.w);
@@ -140,6 +138,8 @@ const Texture* active_texture(GlContext& c) {
 #endif
 }
 
+// The eye-space normal GL lights with: inverse transpose of the modelview, then rescaled
+// (GL 1.2 equation 2.1) or normalized when enabled; otherwise left as it is.
 [[gnu::always_inline]] inline glm::vec3 eye_normal(const GlContext& c, const glm::vec3& normal) {
   const Primitive& p = c.prim;
   glm::vec3 n = p.normal_matrix * normal;
