@@ -79,7 +79,8 @@ void clear_listed_tiles(GlContext& c, std::uint8_t what, T* buffer, T value) {
 }
 
 // The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3). Unmasked, tiles
-// that still hold the same clear colour are left as they are.
+// that still hold the same clear colour are left as they are, unless the colour buffer is
+// the caller's own buffer (the caller may have written into it since).
 void clear_color(GlContext& c) {
   const auto& mask = c.raster.color_mask;
   const std::array<std::uint8_t, 4> bytes = Framebuffer::color_bytes(c.raster.clear_color);  // the core's rounding
@@ -89,7 +90,7 @@ void clear_color(GlContext& c) {
   if (all) {  // whole pixels, tile by tile
     std::uint32_t value;
     std::memcpy(&value, px, 4);
-    list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color);
+    list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color && !c.fb.color.attached());
     c.tiles.clear_color = value;
     clear_listed_tiles(c, PipelineContext::PendingClears::kColor, reinterpret_cast<std::uint32_t*>(c.fb.color.data()), value);
     return;

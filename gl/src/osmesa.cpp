@@ -137,8 +137,13 @@ void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value) {
     } else {
       return c.set_error(GL_INVALID_ENUM);
     }
+    // The colour is copied out in the new layout, and the buffer used as the colour buffer
+    // again only if that layout is the framebuffer's.
+    if (c.pipeline) c.pipeline->finish_draws();
+    c.fb.color.detach();
     mark_all_changed(c);
     present(c);
+    if (lends_color(c)) import_user_buffer(c);
   });
 }
 

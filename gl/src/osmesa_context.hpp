@@ -10,7 +10,10 @@ struct osmesa_context : shadelab::gl::GlContext {
 
 namespace shadelab::gl {
 
-/// Reads the caller's buffer into the framebuffer (present.cpp).
+/// Makes the caller's buffer the framebuffer's colour: the buffer itself when it has the
+/// framebuffer's layout (lends_color), else its pixels read in (present.cpp).
 void import_user_buffer(GlContext& c);
+/// Whether the caller's buffer has the framebuffer's colour layout and size.
+bool lends_color(const GlContext& c);
 
 }  // namespace shadelab::gl

@@ -101,8 +101,15 @@ void mark_all_changed(GlContext& c) {
 void present(GlContext& c) {
   const UserBuffer& u = c.user;
   if (!u.data) return;
-  if (c.pipeline) c.pipeline->finish_draws();  // pending clears stay pending
   TileMap& m = c.tiles;
+  if (c.fb.color.attached()) {
+    // The caller's buffer is the colour buffer: what was drawn is there; colour clears still
+    // pending are written now (depth clears stay pending).
+    if (c.pipeline) c.pipeline->apply_pending_clears(c.fb, PipelineContext::PendingClears::kColor);
+    for (std::uint8_t& f : m.flags) f &= std::uint8_t(~TileMap::kChanged);
+    return;
+  }
+  if (c.pipeline) c.pipeline->finish_draws();  // pending clears stay pending
   const Swizzle s = swizzle_of(u.format);
   // Tiles holding nothing but the clear colour are filled with it in the caller's format
   // (writing without reading the framebuffer); the others are copied.
@@ -144,10 +151,22 @@ void present(GlContext& c) {
   for (std::uint8_t& f : m.flags) f &= std::uint8_t(~TileMap::kChanged);
 }
 
-// The caller's buffer is the colour buffer, as in classic OSMesa: its pixels are read in
-// when it is bound (formats without alpha read as opaque).
+bool lends_color(const GlContext& c) {
+  const UserBuffer& u = c.user;
+  return u.data && u.format == OSMESA_RGBA && u.y_up && (u.row_length == 0 || u.row_length == u.width) &&
+         u.width == c.fb.width && u.height == c.fb.height;
+}
+
+// The caller's buffer is the colour buffer, as in classic OSMesa. In the framebuffer's own
+// layout (RGBA bytes, rows from the bottom, no padding) it is used as it is; otherwise its
+// pixels are read in (formats without alpha read as opaque) and copied out at each flush.
 void import_user_buffer(GlContext& c) {
   const UserBuffer& u = c.user;
+  if (lends_color(c)) {
+    c.fb.color.attach(static_cast<std::uint8_t*>(u.data), c.fb.color.size());
+    return;
+  }
+  c.fb.color.detach();
   Swizzle s = swizzle_of(u.format);
   for (int y = 0; y < c.fb.height; ++y) {
     const unsigned char* src = user_row(u, y, s.bytes);

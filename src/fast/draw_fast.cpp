@@ -39,20 +39,43 @@ int tile_columns(const Framebuffer& fb) { return (fb.width + kTileSize - 1) / kT
 
 int tile_count(const Framebuffer& fb) { return tile_columns(fb) * ((fb.height + kTileSize - 1) / kTileSize); }
 
-// Applies tile `tile`'s pending clear, if any, and resets its flag.
-void clear_tile(Framebuffer& fb, PipelineContext::PendingClears& p, int tile) {
-  const std::uint8_t what = p.tiles[std::size_t(tile)];
+// Fills n pixels at `dst` with `value`, with streaming stores where the target has them and
+// dst is aligned for them (the lines written need not be read first).
+void stream_fill(std::uint32_t* dst, std::size_t n, std::uint32_t value) {
+#if defined(__SSE2__)
+  if ((reinterpret_cast<std::uintptr_t>(dst) & 15u) == 0) {
+    const __m128i v = _mm_set1_epi32(int(value));
+    for (; n >= 4; n -= 4, dst += 4) _mm_stream_si128(reinterpret_cast<__m128i*>(dst), v);
+  }
+#endif
+  std::fill_n(dst, n, value);
+}
+
+// Applies the buffers in `only` of tile `tile`'s pending clear, if any, and resets their
+// flags. With `stream`, colour is written with streaming stores (for a tile not drawn next),
+// and the caller fences (fence_streams) before others read it.
+void clear_tile(Framebuffer& fb, PipelineContext::PendingClears& p, int tile, std::uint8_t only, bool stream) {
+  const std::uint8_t what = p.tiles[std::size_t(tile)] & only;
   if (!what) return;
-  p.tiles[std::size_t(tile)] = 0;
+  p.tiles[std::size_t(tile)] &= std::uint8_t(~what);
   const int columns = tile_columns(fb);
   const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
   const int x1 = std::min(fb.width, x0 + kTileSize), y1 = std::min(fb.height, y0 + kTileSize);
   auto* color = reinterpret_cast<std::uint32_t*>(fb.color.data());
   for (int y = y0; y < y1; ++y) {
     const std::size_t row = std::size_t(y) * std::size_t(fb.width);
-    if (what & PipelineContext::PendingClears::kColor) std::fill(color + row + x0, color + row + x1, p.color);
+    if (what & PipelineContext::PendingClears::kColor) {
+      if (stream) stream_fill(color + row + x0, std::size_t(x1 - x0), p.color);
+      else std::fill(color + row + x0, color + row + x1, p.color);
+    }
     if (what & PipelineContext::PendingClears::kDepth) std::fill(&fb.depth[row + std::size_t(x0)], &fb.depth[row + std::size_t(x1)], p.depth);
   }
+}
+
+void fence_streams() {
+#if defined(__SSE2__)
+  _mm_sfence();  // streaming stores are seen by whoever reads the framebuffer next
+#endif
 }
 
 // Whether `p` holds flags for `fb`'s tiles (anything else is nothing pending).
@@ -63,12 +86,13 @@ bool pending_for(const PipelineContext::PendingClears& p, const Framebuffer& fb)
 }  // namespace
 }  // namespace fast
 
-void PipelineContext::apply_pending_clears(Framebuffer& fb) {
+void PipelineContext::apply_pending_clears(Framebuffer& fb, std::uint8_t what) {
   finish_draws();
   PendingClears& p = impl_->pending;
   if (!fast::pending_for(p, fb)) return;
   parallel_for(p.tiles.size(), 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t) fast::clear_tile(fb, p, int(t));
+    for (std::size_t t = begin; t < end; ++t) fast::clear_tile(fb, p, int(t), what, true);
+    fast::fence_streams();
   });
 }
 
@@ -154,21 +178,6 @@ PixelTarget framebuffer_target(Framebuffer& fb) {
   return {fb.depth.data(), reinterpret_cast<std::uint32_t*>(fb.color.data()), std::size_t(fb.width), 0, 0};
 }
 
-// Copies `bytes` from a 16-byte aligned `src` to `dst` with streaming stores where the
-// target has them and dst is aligned for them: a tile's lines are written whole and not read
-// again soon, so they need not be read into the cache first. memcpy otherwise.
-void stream_out(void* dst, const void* src, std::size_t bytes) {
-#if defined(__SSE2__)
-  if ((reinterpret_cast<std::uintptr_t>(dst) & 15u) == 0 && bytes % 16 == 0) {
-    auto* d = static_cast<__m128i*>(dst);
-    const auto* s = static_cast<const __m128i*>(src);
-    for (std::size_t i = 0; i < bytes / 16; ++i) _mm_stream_si128(d + i, _mm_load_si128(s + i));
-    return;
-  }
-#endif
-  std::memcpy(dst, src, bytes);
-}
-
 // Draws tile `tile` of every job in `jobs`, in order, on one thread. A tile with a pending
 // clear, wholly inside the framebuffer and drawn on the SIMD path alone, is drawn in the
 // worker's tile buffer: its cleared parts made there, the others copied in, the draws made
@@ -185,7 +194,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   bool buffered = what != 0 && x0 + kTileSize <= fb.width && y0 + kTileSize <= fb.height;
   for (const DrawJob* job : jobs) buffered = buffered && !job->plan.scalar_fragments;
   if (!buffered) {
-    if (what) clear_tile(fb, p, tile);
+    if (what) clear_tile(fb, p, tile, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, false);
     ws.target = framebuffer_target(fb);
     for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
     return;
@@ -193,27 +202,14 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   p.tiles[std::size_t(tile)] = 0;
   if (!ws.tile) ws.tile = std::make_unique<TileBuffer>();
   TileBuffer& b = *ws.tile;
-  const std::size_t width = std::size_t(fb.width);
-  auto* color = reinterpret_cast<std::uint32_t*>(fb.color.data());
-  for (int r = 0; r < kTileSize; ++r) {
-    const std::size_t row = std::size_t(y0 + r) * width + std::size_t(x0);
-    std::uint32_t* c = b.color + r * kTileSize;
-    float* d = b.depth + r * kTileSize;
-    if (what & PipelineContext::PendingClears::kColor) std::fill_n(c, kTileSize, p.color);
-    else std::memcpy(c, color + row, kTileSize * sizeof(std::uint32_t));
-    if (what & PipelineContext::PendingClears::kDepth) std::fill_n(d, kTileSize, p.depth);
-    else std::memcpy(d, &fb.depth[row], kTileSize * sizeof(float));
-  }
+  const std::size_t first = std::size_t(y0) * std::size_t(fb.width) + std::size_t(x0);
+  const TileRows rows{reinterpret_cast<std::uint32_t*>(fb.color.data()) + first, fb.depth.data() + first,
+                      std::size_t(fb.width)};
+  load_tile(b, rows, what, p.color, p.depth);
   ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0};
   for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
-  for (int r = 0; r < kTileSize; ++r) {
-    const std::size_t row = std::size_t(y0 + r) * width + std::size_t(x0);
-    stream_out(color + row, b.color + r * kTileSize, kTileSize * sizeof(std::uint32_t));
-    stream_out(&fb.depth[row], b.depth + r * kTileSize, kTileSize * sizeof(float));
-  }
-#if defined(__SSE2__)
-  _mm_sfence();  // the streaming stores are seen by whoever reads the framebuffer next
-#endif
+  store_tile(b, rows);
+  fence_streams();
 }
 
 // Rasterizes `tiles` (indices of framebuffer tiles) with draw_tile, each by whichever

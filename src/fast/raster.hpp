@@ -9,4 +9,23 @@ namespace shadelab::fast {
 /// Rasterizes tile `tile` (row-major index) with the best SIMD target this CPU runs.
 void raster_tile(const DrawJob& job, int tile, WorkerScratch& ws);
 
+/// A whole tile between the framebuffer and a tile buffer, rows of kTileSize pixels from
+/// `color` and `depth` (the tile's first pixel) `stride` pixels apart, with the widest
+/// vectors this CPU has.
+struct TileRows {
+  std::uint32_t* color;
+  float* depth;
+  std::size_t stride;
+};
+
+/// Fills the tile buffer: colour with `clear_color` where `clear` has
+/// PendingClears::kColor, else from `from`; depth likewise.
+void load_tile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint32_t clear_color,
+               float clear_depth);
+
+/// Writes the tile buffer out to `to` with streaming stores (the lines are not read first;
+/// to's rows should start on 16 bytes, else they are copied plainly). The caller fences
+/// them (SSE2's sfence) before another thread reads them.
+void store_tile(const TileBuffer& b, const TileRows& to);
+
 }  // namespace shadelab::fast
