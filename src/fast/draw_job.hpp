@@ -64,6 +64,14 @@ struct VaryingLayout {
   int count = 0;                                  // floats per vertex
 };
 
+/// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster.cpp):
+/// the general one, which reads the fragment state at every block, or one compiled for the
+/// usual state, with nothing left to decide per block: the depth test kLess or kLequal writing
+/// depth, every colour channel written, flat or Gouraud colours, and the colour either
+/// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
+/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
+
 /// What a draw needs from each stage, decided once per draw (plan.cpp).
 struct DrawPlan {
   VaryingLayout layout;
@@ -75,6 +83,7 @@ struct DrawPlan {
   bool scalar_fragments = false; ///< per-fragment reference operations (stencil, capture,
                                  ///< textures, Phong the SIMD kernel does not cover)
   bool writes_color = true;      ///< some colour channel is written (or captured)
+  BlockKernel kernel = BlockKernel::kGeneral;
   LightingSetup lighting;
 };
 

@@ -244,6 +244,10 @@ struct TrianglePlanes {
   bool uniform;
   float uniform_color[4];
   Plane position[3], normal[3];
+  // The opaque kernels' colour planes, in bytes: 255 c + kJustBelowHalf, whose truncation
+  // (clamped to [0, 255]) is the byte (to_unorm8). Equal to the colour planes' bytes for one
+  // colour over the triangle; otherwise within the same few float roundings.
+  Plane bytes[4];
   bool exact;          // the reference's arithmetic for every varying (a non-finite one)
   bool ready = false;  // set up at the first fragment that passes its tests
 };
@@ -271,6 +275,12 @@ HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePla
     const Plane& p = out.color[c];
     out.uniform = out.uniform && p.d0 == 0.0f && p.d1 == 0.0f;
     out.uniform_color[c] = p.base > 0.0f ? std::min(p.base, 1.0f) : 0.0f;  // clamp_unit
+  }
+  if (job.plan.kernel == BlockKernel::kOpaqueLess || job.plan.kernel == BlockKernel::kOpaqueLequal) {
+    for (int c = 0; c < 4; ++c) {
+      const Plane& p = out.color[c];
+      out.bytes[c] = {p.base * 255.0f + kJustBelowHalf, p.d0 * 255.0f, p.d1 * 255.0f, p.k};
+    }
   }
 }
 
@@ -383,14 +393,9 @@ HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& ds
 // fragment_ops.cpp's unit(): v > 0 ? min(v, 1) : 0, so NaN becomes 0.
 HWY_INLINE VB clamp_unit(VB v) { return clamp01(DB(), v); }
 
-// lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane: s = v * 255,
-// then trunc(s + kJustBelowHalf) (draw_job.hpp), which is lround(s) for every float s in
-// [0, 255].
-HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
-  const DB db;
-  const VB t = hn::Add(hn::Mul(v, hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf));
-  // t lies in [0, 256): the truncating conversion itself, without the fix-up ConvertTo adds
-  // for values that overflow an int32 (four more operations).
+/// trunc(t) for t in [0, 256) as an integer lane: the truncating conversion itself, without
+/// the fix-up ConvertTo adds for values that overflow an int32 (four more operations).
+HWY_INLINE hn::Vec<DUB> truncate_byte(VB t) {
 #if HWY_TARGET <= HWY_AVX3
   const hn::Vec<DIB> i{_mm512_cvttps_epi32(t.raw)};
 #elif HWY_TARGET == HWY_AVX2
@@ -401,6 +406,14 @@ HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
   const hn::Vec<DIB> i = hn::ConvertTo(DIB(), t);
 #endif
   return hn::BitCast(DUB(), i);
+}
+
+// lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane: s = v * 255,
+// then trunc(s + kJustBelowHalf) (draw_job.hpp), which is lround(s) for every float s in
+// [0, 255].
+HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
+  const DB db;
+  return truncate_byte(hn::Add(hn::Mul(v, hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf)));
 }
 
 HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
@@ -424,30 +437,66 @@ HWY_INLINE VB byte_to_unit(VB x) {
 #endif
 }
 
+/// Colours clamped to [0, 1] as fragment_ops.cpp's unit().
+HWY_INLINE Rgba clamped(const Rgba& color) {
+  if (color.clamped) return color;
+  Rgba out;
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
+  out.clamped = true;
+  return out;
+}
+
+/// The colours of a block's pixels (RGBA8 words) in [0, 1], as blending reads them.
+HWY_INLINE Rgba unit_colors(hn::Vec<DUB> px) {
+  Rgba dst;
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) dst.c[c] = byte_to_unit(channel(px, c));
+  return dst;
+}
+
+/// The usual transparency, glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), of clamped
+/// colours. Its result needs no clamp: with s, d, a in [0, 1], the rounded s a is at most a
+/// and d (1 - a) at most the rounded 1 - a, whose sum with a rounds to at most 1 (it exceeds 1
+/// by under half an ulp of 1); nothing is negative or NaN.
+HWY_INLINE Rgba blend_src_alpha(const Rgba& src, const Rgba& dst) {
+  Rgba out;
+  const VB a = src.c[3], one_minus_a = one_minus(src.c[3]);
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) out.c[c] = hn::Add(hn::Mul(src.c[c], a), hn::Mul(dst.c[c], one_minus_a));
+  return out;
+}
+
+/// RGBA8 words of colours in [0, 1].
+HWY_INLINE hn::Vec<DUB> pack_unorm8(const Rgba& out) {
+  return hn::Or(hn::Or(to_unorm8(out.c[0]), hn::ShiftLeft<8>(to_unorm8(out.c[1]))),
+                hn::Or(hn::ShiftLeft<16>(to_unorm8(out.c[2])), hn::ShiftLeft<24>(to_unorm8(out.c[3]))));
+}
+
+/// The opaque kernels' RGBA8 words from the byte planes (TrianglePlanes::bytes): each
+/// channel's plane clamped to [0, 255] and truncated (a plane's value lies 255 c +
+/// kJustBelowHalf: to_unorm8 of the clamped colour).
+HWY_INLINE hn::Vec<DUB> byte_plane_colors(const TrianglePlanes& planes, const Weights& w) {
+  const DB db;
+  const VB lo = hn::Zero(db), hi = hn::Set(db, 255.0f);
+  hn::Vec<DUB> b[4];
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) b[c] = truncate_byte(hn::Min(hn::Max(linear_varying(w, planes.bytes[c]), lo), hi));
+  return hn::Or(hn::Or(b[0], hn::ShiftLeft<8>(b[1])), hn::Or(hn::ShiftLeft<16>(b[2]), hn::ShiftLeft<24>(b[3])));
+}
+
 /// fragment_ops.cpp's write_color for the lanes of a block set in `live`, at `rows`.
 HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
                              std::uint32_t* const rows[kRows]) {
   const DUB dub;
-  Rgba out = color;
-  if (!color.clamped) {
-    #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) out.c[c] = clamp_unit(color.c[c]);
-  }
+  Rgba out = clamped(color);
   bool masked = !(fs.color_mask[0] && fs.color_mask[1] && fs.color_mask[2] && fs.color_mask[3]);
   hn::Vec<DUB> old = (fs.blend.enabled || masked) ? load_rows(DU(), rows) : hn::Zero(dub);
   if (fs.blend.enabled) {
     const Rgba src = out;
-    Rgba dst;
-    #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) dst.c[c] = byte_to_unit(channel(old, c));
+    const Rgba dst = unit_colors(old);
     if (fs.blend.src == BlendFactor::kSrcAlpha && fs.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
-      // The usual transparency. Its result needs no clamp: with s, d, a in [0, 1], the
-      // rounded s a is at most a and d (1 - a) at most the rounded 1 - a, whose sum with a
-      // rounds to at most 1 (it exceeds 1 by under half an ulp of 1); nothing is negative
-      // or NaN.
-      const VB a = src.c[3], one_minus_a = one_minus(src.c[3]);
-      #pragma GCC unroll 4
-      for (int c = 0; c < 4; ++c) out.c[c] = hn::Add(hn::Mul(src.c[c], a), hn::Mul(dst.c[c], one_minus_a));
+      out = blend_src_alpha(src, dst);
     } else {
       #pragma GCC unroll 4
       for (int c = 0; c < 4; ++c) {
@@ -458,8 +507,7 @@ HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigne
   }
   hn::Vec<DUB> packed;
   if (!masked) {
-    packed = hn::Or(hn::Or(to_unorm8(out.c[0]), hn::ShiftLeft<8>(to_unorm8(out.c[1]))),
-                    hn::Or(hn::ShiftLeft<16>(to_unorm8(out.c[2])), hn::ShiftLeft<24>(to_unorm8(out.c[3]))));
+    packed = pack_unorm8(out);
   } else {
     packed = hn::Zero(dub);
     #pragma GCC unroll 4

@@ -37,6 +37,19 @@ bool writes_color(const FragmentState& f) {
 
 void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, to); }
 
+BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
+  const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
+  if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
+      !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
+    return BlockKernel::kGeneral;
+  }
+  if (!f.blend.enabled) return less ? BlockKernel::kOpaqueLess : BlockKernel::kOpaqueLequal;
+  if (f.blend.src == BlendFactor::kSrcAlpha && f.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
+    return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
+  }
+  return BlockKernel::kGeneral;
+}
+
 }  // namespace
 
 bool has_shadow_maps(const ShadeState& shade) {
@@ -71,6 +84,7 @@ void make_plan(DrawJob& job) {
   p.writes_color = writes_color(frag);
   p.scalar_fragments = frag.stencil.enabled || frag.capture || shade.texture ||
                        (p.phong && (shadows || !simd_materials));
+  p.kernel = kernel_for(p, frag);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);
   if (p.phong) {

@@ -117,6 +117,42 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   if constexpr (kPath == Path::kEdge) close_block(job, g);
 }
 
+// A block of a triangle wholly inside the framebuffer, by one of the kernels compiled for
+// the usual fragment state (BlockKernel, draw_job.hpp): the same operations as simd_block's
+// for that state, without reading it per block; the opaque kernels' colours from the byte
+// planes.
+template <BlockKernel kKernel>
+HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                             GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
+                             const VD b1[kRows], VB f0, VB f1, VB z) {
+  constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
+  constexpr bool kBlend = kKernel == BlockKernel::kBlendLess || kKernel == BlockKernel::kBlendLequal;
+  const DF df;
+  const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
+  float* depth[kRows];
+  std::uint32_t* color[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    depth[r] = target.depth + first + std::size_t(r) * target.stride;
+    color[r] = target.color + first + std::size_t(r) * target.stride;
+  }
+  const VB stored = load_rows(df, depth);
+  const unsigned passed = block_bits(hn::And(block_mask(bits), kLequal ? hn::Le(z, stored) : hn::Lt(z, stored)));
+  counts.fragments += unsigned(std::popcount(bits));
+  counts.shaded += unsigned(std::popcount(passed));
+  if (!passed) return;
+  store_rows(df, z, passed, depth);
+  if (!planes.ready) set_up_planes(job, t, planes);
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  if (planes.exact || planes.has_secondary) return write_colors(*job.frag, vertex_color(t, planes, w), passed, color);
+  if constexpr (kBlend) {
+    const Rgba src = clamped(vertex_color(t, planes, w));
+    store_rows(DU(), pack_unorm8(blend_src_alpha(src, unit_colors(load_rows(DU(), color)))), passed, color);
+  } else {
+    store_rows(DU(), byte_plane_colors(planes, w), passed, color);
+  }
+}
+
 // Reference per-fragment operations for the covered lanes of one row (stencil, capture,
 // textures...).
 void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
@@ -134,7 +170,7 @@ void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
-template <Path kPath>
+template <Path kPath, BlockKernel kKernel>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
                       GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
   const DD dd;
@@ -175,12 +211,14 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
+  } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
+    kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else {
     simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   }
 }
 
-template <Path kPath>
+template <Path kPath, BlockKernel kKernel = BlockKernel::kGeneral>
 void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior) {
   const DD dd;
   const int lanes = int(hn::Lanes(dd));
@@ -215,7 +253,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
       }
     }
     for (int x = gx0; x <= t.x1; x += lanes) {
-      block<kPath>(job, t, planes, ws, counts, x, y, interior, e, thr);
+      block<kPath, kKernel>(job, t, planes, ws, counts, x, y, interior, e, thr);
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
         #pragma GCC unroll 4
@@ -235,6 +273,13 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
     expand_triangle(job, t, ws);
     raster_path<Path::kScalar>(job, t, ws, interior);
   } else if (interior) {
+    switch (job.plan.kernel) {
+      case BlockKernel::kOpaqueLess: return raster_path<Path::kInterior, BlockKernel::kOpaqueLess>(job, t, ws, true);
+      case BlockKernel::kOpaqueLequal: return raster_path<Path::kInterior, BlockKernel::kOpaqueLequal>(job, t, ws, true);
+      case BlockKernel::kBlendLess: return raster_path<Path::kInterior, BlockKernel::kBlendLess>(job, t, ws, true);
+      case BlockKernel::kBlendLequal: return raster_path<Path::kInterior, BlockKernel::kBlendLequal>(job, t, ws, true);
+      case BlockKernel::kGeneral: break;
+    }
     raster_path<Path::kInterior>(job, t, ws, true);
   } else {
     raster_path<Path::kEdge>(job, t, ws, false);
