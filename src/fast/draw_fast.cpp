@@ -196,6 +196,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   if (!buffered) {
     if (what) clear_tile(fb, p, tile, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, false);
     ws.target = framebuffer_target(fb);
+    ws.bound.on = false;
     for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
     return;
   }
@@ -207,6 +208,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
                       std::size_t(fb.width)};
   load_tile(b, rows, what, p.color, p.depth);
   ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0};
+  ws.bound = {true, (what & PipelineContext::PendingClears::kDepth) != 0, p.depth};
   for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
   store_tile(b, rows);
   fence_streams();
@@ -323,6 +325,7 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
     std::copy(in.triangles.begin(), in.triangles.end(), job.triangle_copy.begin());
     job.triangles = job.triangle_copy;
   }
+  job.counted = stats_out != nullptr;
   job.projection = projection;
   job.viewport = viewport;
   fast::make_plan(job);

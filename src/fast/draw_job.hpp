@@ -126,12 +126,22 @@ struct alignas(64) TileBuffer {
   float depth[kTileSize * kTileSize];
 };
 
+/// The largest depth value of the tile a worker draws in its tile buffer (raster.cpp's
+/// behind_tile): a large triangle every fragment of which would fail GL_LESS or GL_LEQUAL
+/// against it is not rasterized there at all.
+struct TileDepthBound {
+  bool on = false;     ///< drawing a tile in the tile buffer
+  bool known = false;  ///< `max` is the largest depth in the tile (else computed when needed)
+  float max = 1.0f;
+};
+
 /// Per-worker scratch (vertex stage and rasterizer).
 struct WorkerScratch {
   detail::Attribs attribs[3];     ///< full reference attributes (scalar fragments)
   std::vector<float> visibility;  ///< shadow-map visibility per light (scalar lighting)
   PixelTarget target;             ///< set before each raster_tile
   std::unique_ptr<TileBuffer> tile;  ///< made at its first use
+  TileDepthBound bound;              ///< of the tile drawn in `tile`
   RenderStats stats;
 };
 
@@ -150,6 +160,7 @@ struct DrawJob {
   std::vector<Light> light_copy;  ///< shade_copy.lights when deferred
   detail::ScratchVector<Triangle> triangle_copy;
   std::vector<int> tiles;  ///< the tiles this draw's triangles reach (deferred draws)
+  bool counted = false;    ///< its fragments are counted (RenderStats asked for)
   glm::mat4 projection{1.0f};
   Viewport viewport;
   DrawPlan plan;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 #include "fast/fragment-inl.h"
@@ -265,6 +266,51 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   ws.stats.pixels_shaded += counts.shaded;
 }
 
+// Triangles reaching at least this many pixels of a tile are checked against its depth
+// bound (computing it takes about as long as drawing 16 blocks).
+constexpr int kBoundedArea = 32 * 32;
+
+// The largest depth in the tile buffer.
+float tile_max_depth(const PixelTarget& target) {
+  const hn::ScalableTag<float> df;
+  const std::size_t n = hn::Lanes(df);
+  auto m = hn::LoadU(df, target.depth);
+  for (std::size_t i = n; i < std::size_t(kTileSize) * kTileSize; i += n) m = hn::Max(m, hn::LoadU(df, target.depth + i));
+  return hn::GetLane(hn::MaxOfLanes(df, m));
+}
+
+// A bound below every fragment's depth (block(): clamp_unit(plane + offset)). A plane with
+// no slope gives each fragment base + 0 + 0 exactly: that depth itself. Otherwise the
+// vertices' nearest, less far more than the few float roundings of the plane and the offset.
+float nearest_depth(const TriSetup& t) {
+  const float base = t.depth.base, d0 = t.depth.d0, d1 = t.depth.d1;
+  auto unit = [](float v) { return v > 0.0f ? std::min(v, 1.0f) : 0.0f; };
+  if (d0 == 0.0f && d1 == 0.0f) return unit(base + t.offset);
+  const float margin = 0x1p-20f * (std::fabs(base) + std::fabs(d0) + std::fabs(d1) + std::fabs(t.offset));
+  return unit(std::min({base, base + d0, base + d1}) + t.offset - margin);
+}
+
+// Whether the tile's largest depth shows that no fragment of this large triangle passes the
+// kernel's depth test (kLess / kLequal), so that it need not be rasterized in this tile
+// (a draw whose fragments are counted is always rasterized).
+template <BlockKernel kKernel>
+bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+  TileDepthBound& b = ws.bound;
+  if (!b.on || job.counted || (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) < kBoundedArea) return false;
+  if (!b.known) b = {true, true, tile_max_depth(ws.target)};
+  const float z = nearest_depth(t);
+  constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
+  return kLequal ? z > b.max : z >= b.max;
+}
+
+// A triangle drawn by a kernel, unless its tile's depth bound hides it.
+template <BlockKernel kKernel>
+void raster_kernel(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+  if (behind_tile<kKernel>(job, t, ws)) return;
+  raster_path<Path::kInterior, kKernel>(job, t, ws, true);
+  ws.bound.known = false;  // depth written
+}
+
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const int lanes = int(hn::Lanes(DD()));
   const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
@@ -274,13 +320,14 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
     raster_path<Path::kScalar>(job, t, ws, interior);
   } else if (interior) {
     switch (job.plan.kernel) {
-      case BlockKernel::kOpaqueLess: return raster_path<Path::kInterior, BlockKernel::kOpaqueLess>(job, t, ws, true);
-      case BlockKernel::kOpaqueLequal: return raster_path<Path::kInterior, BlockKernel::kOpaqueLequal>(job, t, ws, true);
-      case BlockKernel::kBlendLess: return raster_path<Path::kInterior, BlockKernel::kBlendLess>(job, t, ws, true);
-      case BlockKernel::kBlendLequal: return raster_path<Path::kInterior, BlockKernel::kBlendLequal>(job, t, ws, true);
+      case BlockKernel::kOpaqueLess: return raster_kernel<BlockKernel::kOpaqueLess>(job, t, ws);
+      case BlockKernel::kOpaqueLequal: return raster_kernel<BlockKernel::kOpaqueLequal>(job, t, ws);
+      case BlockKernel::kBlendLess: return raster_kernel<BlockKernel::kBlendLess>(job, t, ws);
+      case BlockKernel::kBlendLequal: return raster_kernel<BlockKernel::kBlendLequal>(job, t, ws);
       case BlockKernel::kGeneral: break;
     }
     raster_path<Path::kInterior>(job, t, ws, true);
+    if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
   } else {
     raster_path<Path::kEdge>(job, t, ws, false);
   }

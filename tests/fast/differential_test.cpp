@@ -227,6 +227,80 @@ TEST(FastDifferential, DeferredDrawsMatchTheReference) {
   EXPECT_GT(buffered_scenes, 50);
 }
 
+// A wall of small quads at random depths, then large layers at the wall's farthest depth,
+// or a few float steps in front of it, flat or sloped, with GL_LESS or GL_LEQUAL, opaque or
+// blended, over tiles with pending clears (drawn in tile buffers, where the tile's largest
+// depth lets a layer that fails everywhere go undrawn: raster.cpp's behind_tile). Layers
+// that pass anywhere must be drawn there: the same as the reference.
+TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
+  PipelineContext ctx(2);
+  ctx.set_deferred(true);
+  const glm::ivec2 size{2 * PipelineContext::kTileSize + 40, 2 * PipelineContext::kTileSize};
+  auto quad = [](RandomDraw& d, glm::vec2 lo, glm::vec2 hi, const float z[4], const glm::vec4& color) {
+    const auto first = std::uint32_t(d.positions.size());
+    const glm::vec2 corners[4] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+    for (int k = 0; k < 4; ++k) d.positions.emplace_back(corners[k], z[k], 1.0f), d.colors.push_back(color);
+    d.triangles.push_back({first, first + 1, first + 2});
+    d.triangles.push_back({first, first + 2, first + 3});
+  };
+  for (unsigned seed = 0; seed < 80; ++seed) {
+    RandomDraws random(9000 + seed);
+    const Framebuffer initial = random.framebuffer(size);
+    std::vector<RandomDraw> draws(1);
+    RandomDraw& wall = draws[0];
+    wall.viewport = {0, 0, size.x, size.y};
+    wall.shade.lighting = false;
+    // NDC depths: the wall's in [-0.2, 0.2]; its farthest is where the layers go.
+    float farthest = -1.0f;
+    const int n = random.integer(4, 12);
+    for (int j = 0; j < n; ++j) {
+      for (int i = 0; i < n; ++i) {
+        const float z = random.chance(0.5) ? 0.2f : random.uniform(-0.2f, 0.2f);
+        const float zs[4] = {z, z, z, z};
+        farthest = std::max(farthest, z);
+        const float step = 2.0f / float(n);
+        quad(wall, {-1.0f + step * float(i), -1.0f + step * float(j)}, {-1.0f + step * float(i + 1), -1.0f + step * float(j + 1)},
+             zs, random.color());
+      }
+    }
+    const int layers = random.integer(1, 3);
+    for (int l = 0; l < layers; ++l) {
+      RandomDraw layer;
+      layer.viewport = wall.viewport;
+      layer.shade.lighting = false;
+      layer.frag.depth_func = random.chance(0.5) ? CompareFunc::kLess : CompareFunc::kLequal;
+      layer.frag.blend.enabled = random.chance(0.5);
+      // At the farthest depth, or a few floats in front of it at one corner (sloped).
+      float zs[4] = {farthest, farthest, farthest, farthest};
+      if (random.chance(0.5)) {
+        zs[random.integer(0, 3)] = farthest - float(random.integer(1, 4)) * std::numeric_limits<float>::epsilon();
+        if (random.chance(0.5)) zs[random.integer(0, 3)] = farthest + 0.1f;
+      }
+      quad(layer, {-1.0f, -1.0f}, {1.0f, 1.0f}, zs, random.color(0.2f));
+      draws.push_back(layer);
+    }
+    const int columns = (size.x + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize;
+    const int tiles = columns * ((size.y + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize);
+    PipelineContext::PendingClears clears;
+    clears.tiles.assign(std::size_t(tiles), PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth);
+    clears.color = 0xff204060u;
+    clears.depth = 1.0f;
+    Framebuffer cleared = initial;
+    cleared.clear_color(glm::vec4(0x60, 0x40, 0x20, 0xff) / 255.0f);
+    cleared.clear_depth(1.0f);
+    Result ref = render(cleared, draws, nullptr);
+    Result fast;
+    fast.fb = initial;
+    ctx.pending_clears() = clears;
+    for (const RandomDraw& d : draws) {
+      VertexInput in = d.input();
+      draw_triangles(fast.fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+    }
+    ctx.apply_pending_clears(fast.fb);
+    ASSERT_EQ(compare_buffers(fast.fb, ref.fb), "") << "seed " << seed;
+  }
+}
+
 // Draws wait only while deferred drawing is on, and only those that own what they read.
 TEST(FastDifferential, OnlyDrawsThatOwnTheirInputsWait) {
   PipelineContext ctx(2);
