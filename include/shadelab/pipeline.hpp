@@ -296,6 +296,11 @@ class PipelineContext {
     float depth = 1.0f;
   };
   PendingClears& pending_clears();
+  /// Leaves a clear of `fb`'s colour (PendingClears::kColor, to `color`) and / or depth
+  /// (kDepth, to `depth`) pending on every tile: each tile is cleared by the next draw into
+  /// it, while it is in the cache, and apply_pending_clears clears the others (call it before
+  /// reading `fb`). Waiting draws are finished first.
+  void clear_later(Framebuffer& fb, std::uint8_t what, glm::vec4 color, float depth);
   /// Finishes the waiting draws, then applies the pending clears of the buffers in `what`
   /// (PendingClears::kColor, kDepth: both by default) to `fb` now, on the context's threads;
   /// the others stay pending. Colour is written with streaming stores where it can be (it

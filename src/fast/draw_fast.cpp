@@ -96,6 +96,18 @@ void PipelineContext::apply_pending_clears(Framebuffer& fb, std::uint8_t what) {
   });
 }
 
+void PipelineContext::clear_later(Framebuffer& fb, std::uint8_t what, glm::vec4 color, float depth) {
+  finish_draws();  // drawn before the clear
+  PendingClears& p = impl_->pending;
+  if (!fast::pending_for(p, fb)) p.tiles.assign(std::size_t(fast::tile_count(fb)), 0);
+  // Every tile is flagged: a value pending before for the same buffer is cleared over.
+  what &= PendingClears::kColor | PendingClears::kDepth;
+  const std::array<std::uint8_t, 4> bytes = Framebuffer::color_bytes(color);
+  if (what & PendingClears::kColor) std::memcpy(&p.color, bytes.data(), 4);
+  if (what & PendingClears::kDepth) p.depth = std::clamp(depth, 0.0f, 1.0f);
+  for (std::uint8_t& t : p.tiles) t |= what;
+}
+
 void PipelineContext::parallel_for_ref(std::size_t count, std::size_t grain,
                                        void (*call)(void*, std::size_t, std::size_t), void* fn) {
   if (count == 0) return;

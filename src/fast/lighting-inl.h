@@ -162,7 +162,15 @@ HWY_INLINE hn::Vec<D> specular_lanes(D d, const LightParams& l, const MaterialPa
     // v = (0, 0, 1) and |L| = 1: n . (L + v) / |L + v| = (n.L + n.z) / sqrt(2 + 2 L.z), and
     // 0 where L + v vanishes, as the reference's normalize_or.
     const hn::Vec<D> h2 = hn::MulAdd(hn::Set(d, 2.0f), to_light.z, hn::Set(d, 2.0f));
-    const hn::Vec<D> ndh = hn::Div(hn::Add(n_dot_l, n.z), hn::Sqrt(h2));
+    const hn::Vec<D> num = hn::Add(n_dot_l, n.z);
+    const float half = 0.5f * m.shininess;
+    if (half >= 1.0f && half <= 64.0f && half == float(int(half))) {
+      // An even shininess: c^e = (c^2)^(e/2) with c^2 = num^2 / (2 + 2 L.z), for positive c:
+      // no square root (the divider's slowest operation).
+      const auto positive = hn::And(hn::Gt(num, hn::Zero(d)), hn::Gt(h2, hn::Zero(d)));
+      return hn::IfThenElseZero(positive, pow_positive(d, hn::Div(hn::Mul(num, num), h2), half));
+    }
+    const hn::Vec<D> ndh = hn::Div(num, hn::Sqrt(h2));
     c = hn::IfThenElseZero(hn::Gt(h2, hn::Zero(d)), ndh);
   } else {
     V3<D> h{hn::Add(to_light.x, v.x), hn::Add(to_light.y, v.y), hn::Add(to_light.z, v.z)};

@@ -301,6 +301,37 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
   }
 }
 
+// clear_later: every tile cleared, by the draws into it (drawn after the clear) or by
+// apply_pending_clears; a later clear_later's values replace the pending ones; a draw waiting
+// before it is drawn before it. The same as clearing at once.
+TEST(FastDifferential, ClearLaterIsAClear) {
+  for (bool deferred : {false, true}) {
+    PipelineContext ctx(2);
+    ctx.set_deferred(deferred);
+    RandomDraws random(31);
+    const glm::ivec2 size{150, 100};
+    const Framebuffer initial = random.framebuffer(size);
+    RandomDraw before = random.draw(size), after = random.draw(size);
+    simd_only(before);
+    simd_only(after);
+    const glm::vec4 first_color{0.2f, 0.4f, 0.6f, 0.8f}, color{0.9f, 0.1f, 0.3f, 1.0f};
+    // The reference: draw, clear at once, draw.
+    Framebuffer ref = initial;
+    VertexInput in_before = before.input(), in_after = after.input();
+    draw_triangles(ref, before.projection, before.viewport, before.frag, before.shade, in_before, nullptr, nullptr);
+    ref.clear_color(color);
+    ref.clear_depth(0.75f);
+    draw_triangles(ref, after.projection, after.viewport, after.frag, after.shade, in_after, nullptr, nullptr);
+    Framebuffer fast = initial;
+    draw_triangles(fast, before.projection, before.viewport, before.frag, before.shade, in_before, nullptr, &ctx);
+    ctx.clear_later(fast, PipelineContext::PendingClears::kColor, first_color, 0.0f);
+    ctx.clear_later(fast, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, color, 0.75f);
+    draw_triangles(fast, after.projection, after.viewport, after.frag, after.shade, in_after, nullptr, &ctx);
+    ctx.apply_pending_clears(fast);
+    ASSERT_EQ(compare_buffers(fast, ref), "") << (deferred ? "deferred" : "at once");
+  }
+}
+
 // Draws wait only while deferred drawing is on, and only those that own what they read.
 TEST(FastDifferential, OnlyDrawsThatOwnTheirInputsWait) {
   PipelineContext ctx(2);
