@@ -305,7 +305,7 @@ class PipelineContext {
   /// (PendingClears::kColor, kDepth: both by default) to `fb` now, on the context's threads;
   /// the others stay pending. Colour is written with streaming stores where it can be (it
   /// is not read first).
-  void apply_pending_clears(Framebuffer& fb, std::uint8_t what = 3);
+  void apply_pending_clears(Framebuffer& fb, std::uint8_t what = PendingClears::kColor | PendingClears::kDepth);
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that
   /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.
