@@ -246,9 +246,10 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
   for (unsigned seed = 0; seed < 80; ++seed) {
     RandomDraws random(9000 + seed);
     const Framebuffer initial = random.framebuffer(size);
+    const Viewport viewport{0, 0, size.x, size.y};
     std::vector<RandomDraw> draws(1);
-    RandomDraw& wall = draws[0];
-    wall.viewport = {0, 0, size.x, size.y};
+    RandomDraw& wall = draws[0];  // until the layers are pushed
+    wall.viewport = viewport;
     wall.shade.lighting = false;
     // NDC depths: the wall's in [-0.2, 0.2]; its farthest is where the layers go.
     float farthest = -1.0f;
@@ -266,7 +267,7 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
     const int layers = random.integer(1, 3);
     for (int l = 0; l < layers; ++l) {
       RandomDraw layer;
-      layer.viewport = wall.viewport;
+      layer.viewport = viewport;
       layer.shade.lighting = false;
       layer.frag.depth_func = random.chance(0.5) ? CompareFunc::kLess : CompareFunc::kLequal;
       layer.frag.blend.enabled = random.chance(0.5);
