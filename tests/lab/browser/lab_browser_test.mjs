@@ -31,12 +31,16 @@ try {
   const red = page.locator('[data-path="lights[6].diffuse[0]"]').first();
   await red.fill("0");
   await red.dispatchEvent("input");
-  await page.waitForFunction((b) => {
-    const s = document.getElementById("status").textContent;
-    return s.startsWith("rendered");
-  }, before);
-  await page.waitForTimeout(300);
-  check((await imageKey()) !== before, "changing light 6's red changes the image");
+  // The new picture arrives after a render of unknown length (a sanitizer build takes
+  // seconds): poll for it, up to 30 s, rather than trusting the status line, which may still
+  // read "rendered" from the picture before.
+  let after = before;
+  for (let waited = 0; after === before && waited < 30000; waited += 100) {
+    await page.waitForTimeout(100);
+    after = await imageKey();
+  }
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  check(after !== before, "changing light 6's red changes the image");
 
   // 2. Compare mode shows flat, Gouraud and Phong side by side.
   await page.locator("#compare").check();
