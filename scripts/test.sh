@@ -38,9 +38,10 @@ export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
 
-echo "test: ThreadSanitizer (the unit, rendering and differential tests: all draw on threads)"
-sanitized_build build-tsan "-fsanitize=thread" shadelab_tests
+echo "test: ThreadSanitizer (the unit, rendering and differential tests: all draw on threads; GL clears ahead)"
+sanitized_build build-tsan "-fsanitize=thread" shadelab_tests gl_clear_ahead
 TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" build-tsan/tests/shadelab_tests
+TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" build-tsan/tests/steady/gl_clear_ahead
 
 echo "test: fuzzing: past findings, then a repeatable run per target (fuzz/run.sh --ci; docs/robustness.md)"
 fuzz/run.sh --ci

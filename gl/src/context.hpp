@@ -224,6 +224,7 @@ struct TileMap {
   std::uint32_t clear_color = 0;    // the pixel of kColorClear tiles (RGBA8 bytes)
   float clear_depth = 0.0f;         // the depth of kDepthClear tiles
   std::vector<int> list;            // scratch: the tiles an operation visits
+  std::vector<int> ahead;           // the tiles glClear clears ahead (clear_ahead)
   std::vector<int> runs;            // scratch: for_listed_tiles' runs of neighbouring tiles
   std::vector<unsigned char> clear_row;  // scratch: a row of the clear colour, caller's format
 };

@@ -78,6 +78,21 @@ void clear_listed_tiles(GlContext& c, std::uint8_t what, T* buffer, T value) {
   });
 }
 
+// Lists in c.tiles.ahead the tiles of the caller's buffer (lent as the colour buffer) that
+// no draw reached since the last colour clear: those a frame like the last one leaves as
+// cleared. glClear has them cleared on a worker thread while the caller goes on to its next
+// draw (PipelineContext::clear_ahead), instead of at the next flush after the frame's
+// rasterization. (In a buffer the framebuffer copies out, a cleared tile is filled with the
+// clear colour in the caller's buffer at the flush, never in the framebuffer.)
+void list_tiles_to_clear_ahead(GlContext& c) {
+  TileMap& m = c.tiles;
+  m.ahead.clear();
+  if (!c.pipeline || c.pipeline->threads() < 2 || !c.fb.color.attached()) return;
+  for (std::size_t t = 0; t < m.flags.size(); ++t) {
+    if (m.flags[t] & TileMap::kColorClear) m.ahead.push_back(int(t));
+  }
+}
+
 // The colour buffer cleared through the colour mask (GL 1.1 section 4.2.3). Unmasked, tiles
 // that still hold the same clear colour are left as they are, unless the colour buffer is
 // the caller's own buffer (the caller may have written into it since).
@@ -90,6 +105,7 @@ void clear_color(GlContext& c) {
   if (all) {  // whole pixels, tile by tile
     std::uint32_t value;
     std::memcpy(&value, px, 4);
+    list_tiles_to_clear_ahead(c);
     list_tiles_to_clear(c, TileMap::kColorClear, value == c.tiles.clear_color && !c.fb.color.attached());
     c.tiles.clear_color = value;
     clear_listed_tiles(c, PipelineContext::PendingClears::kColor, reinterpret_cast<std::uint32_t*>(c.fb.color.data()), value);
@@ -157,11 +173,14 @@ void GLAPIENTRY glClear(GLbitfield mask) {
     const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
                              GL_ACCUM_BUFFER_BIT;
     if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
+    c.tiles.ahead.clear();
     if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
     if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
       clear_depth(c);
     }
     if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
+    // Started last: the clears above would wait for it.
+    if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
   });
 }
 

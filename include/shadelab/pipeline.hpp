@@ -306,6 +306,15 @@ class PipelineContext {
   /// the others stay pending. Colour is written with streaming stores where it can be (it
   /// is not read first).
   void apply_pending_clears(Framebuffer& fb, std::uint8_t what = PendingClears::kColor | PendingClears::kDepth);
+  /// Starts applying the pending clears of the buffers in `what` to the listed tiles of `fb`
+  /// on one of the context's worker threads, and returns while it runs: memory-bound writes
+  /// that then overlap the caller's own work (the GL library's glClear, for the tiles no draw
+  /// reached since the clear before: the tiles it expects to stay as cleared). Every other
+  /// call through the context waits for it to end first; until then `fb` must not be read,
+  /// written, resized or destroyed. With one thread it does nothing (the clears stay
+  /// pending). A listed tile that a draw reaches after all is cleared twice, which costs
+  /// time, not correctness; tiles listed twice or not in `fb` are ignored.
+  void clear_ahead(Framebuffer& fb, std::uint8_t what, std::span<const int> tiles);
   /// Runs fn(begin, end) over [0, count) in chunks of about `grain` items on the context's
   /// threads (the caller joins in); returns when every chunk is done. For front ends that
   /// prepare vertices before a draw. fn must be safe to run concurrently on disjoint ranges.

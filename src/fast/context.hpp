@@ -25,6 +25,14 @@ struct PipelineContext::Impl {
   std::vector<int> tiles;                    ///< the last draw's non-empty tiles
   std::vector<std::vector<const fast::DrawJob*>> tile_jobs;  ///< finish_draws: per tile, its draws
   PendingClears pending;                     ///< clears left to the draws
+  /// clear_ahead's job, run on the workers while the caller goes on: clears tiles[item].
+  struct ClearAhead {
+    PendingClears* pending = nullptr;
+    Framebuffer* fb = nullptr;
+    std::uint8_t what = 0;
+    std::vector<int> tiles;
+    void operator()(int item) const;
+  } ahead;
 };
 
 }  // namespace shadelab

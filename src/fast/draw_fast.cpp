@@ -24,13 +24,16 @@ namespace shadelab {
 PipelineContext::PipelineContext(int threads)
     : impl_(std::make_unique<Impl>(fast::resolve_thread_count(threads))) {}
 
-PipelineContext::~PipelineContext() = default;
+PipelineContext::~PipelineContext() { impl_->pool.wait(); }  // clear_ahead's job uses Impl
 
 int PipelineContext::threads() const { return impl_->pool.size(); }
 
 std::span<const int> PipelineContext::last_draw_tiles() const { return impl_->tiles; }
 
-PipelineContext::PendingClears& PipelineContext::pending_clears() { return impl_->pending; }
+PipelineContext::PendingClears& PipelineContext::pending_clears() {
+  impl_->pool.wait();  // clear_ahead's job writes the flags
+  return impl_->pending;
+}
 
 namespace fast {
 namespace {
@@ -94,6 +97,30 @@ void PipelineContext::apply_pending_clears(Framebuffer& fb, std::uint8_t what) {
     for (std::size_t t = begin; t < end; ++t) fast::clear_tile(fb, p, int(t), what, true);
     fast::fence_streams();
   });
+}
+
+void PipelineContext::clear_ahead(Framebuffer& fb, std::uint8_t what, std::span<const int> tiles) {
+  Impl& impl = *impl_;
+  impl.pool.wait();  // the job before reads impl.ahead
+  if (impl.pool.size() < 2 || tiles.empty() || !fast::pending_for(impl.pending, fb)) return;
+  impl.ahead.pending = &impl.pending;
+  impl.ahead.fb = &fb;
+  impl.ahead.what = what & (PendingClears::kColor | PendingClears::kDepth);
+  // Each of fb's tiles once (two threads must not clear one tile).
+  std::vector<int>& list = impl.ahead.tiles;
+  const int count = fast::tile_count(fb);
+  list.clear();
+  for (int t : tiles) {
+    if (t >= 0 && t < count) list.push_back(t);
+  }
+  if (!std::is_sorted(list.begin(), list.end())) std::sort(list.begin(), list.end());
+  list.erase(std::unique(list.begin(), list.end()), list.end());
+  impl.pool.start(int(list.size()), impl.ahead);
+}
+
+void PipelineContext::Impl::ClearAhead::operator()(int item) const {
+  fast::clear_tile(*fb, *pending, tiles[std::size_t(item)], what, true);
+  fast::fence_streams();
 }
 
 void PipelineContext::clear_later(Framebuffer& fb, std::uint8_t what, glm::vec4 color, float depth) {
@@ -226,18 +253,16 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   fence_streams();
 }
 
-// Rasterizes `tiles` (indices of framebuffer tiles) with draw_tile, each by whichever
-// thread is free; jobs_of(tile) names the draws to make in it. Tiles are claimed alternately
-// from the first and the second half of the list, so that threads do not draw side by side:
-// the framebuffer's rows need not start on a cache line (a vector's storage is 16-byte
-// aligned), so two tiles next to each other share a line in every row, and two threads
-// writing them pass those lines back and forth (the full-screen Gouraud fill ran no faster
-// on two threads than on one, claiming tiles in order).
+// Rasterizes `tiles` (indices of framebuffer tiles) with draw_tile; jobs_of(tile) names the
+// draws to make in it. Each thread draws a contiguous run of the list (the pool's shares),
+// so threads do not draw side by side: the framebuffer's rows need not start on a cache line
+// (a vector's storage is 16-byte aligned), so two tiles next to each other share a line in
+// every row, and two threads writing them pass those lines back and forth (the full-screen
+// Gouraud fill ran no faster on two threads than on one, claiming tiles in order).
 template <class JobsOf>
 void raster_tiles(PipelineContext::Impl& impl, Framebuffer& fb, std::span<const int> tiles, const JobsOf& jobs_of) {
-  const std::size_t half = (tiles.size() + 1) / 2;
   impl.pool.run(int(tiles.size()), [&](int i, int worker) {
-    const int tile = tiles[(std::size_t(i) % 2) * half + std::size_t(i) / 2];
+    const int tile = tiles[std::size_t(i)];
     draw_tile(impl, fb, tile, jobs_of(tile), impl.workers[std::size_t(worker)]);
   });
 }
@@ -272,6 +297,7 @@ std::size_t PipelineContext::deferred_draws() const { return impl_->queued; }
 
 void PipelineContext::finish_draws() {
   Impl& impl = *impl_;
+  impl.pool.wait();  // clear_ahead's job ends first
   if (impl.queued == 0) return;
   const fast::DrawJob& first = *impl.jobs[0];
   if (first.fb->width != first.fb_width || first.fb->height != first.fb_height) {
@@ -301,6 +327,7 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
                                  const FragmentState& fragment, const ShadeState& shade,
                                  const VertexInput& in, RenderStats* stats_out) {
   PipelineContext::Impl& impl = context.impl();
+  impl.pool.wait();  // clear_ahead's job ends first
   if (!fast::in_fixed_point_range(fb, viewport)) {  // the reference draws: any tile may change
     context.apply_pending_clears(fb);
     impl.tiles.resize(std::size_t(fast::tile_count(fb)));

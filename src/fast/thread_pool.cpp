@@ -1,7 +1,9 @@
 // The fast pipeline's thread pool: a generation counter wakes the workers for each job, items
-// are claimed with an atomic counter, and the caller waits until every worker has left the job.
+// are claimed from per-thread shares by compare-and-swap, and the caller waits until every
+// worker has left the job.
 #include "fast/thread_pool.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 
@@ -18,12 +20,6 @@ namespace {
 // most 1 ms of one core per frame is spent polling.
 constexpr auto kSpin = std::chrono::microseconds(1000);
 
-void cpu_relax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#endif
-}
-
 }  // namespace
 
 int resolve_thread_count(int threads) {
@@ -36,32 +32,58 @@ int resolve_thread_count(int threads) {
   return cores > 0 ? int(cores) : 1;
 }
 
-ThreadPool::ThreadPool(int threads) {
+ThreadPool::ThreadPool(int threads) : shares_(std::make_unique<Share[]>(std::size_t(std::max(threads, 1)))) {
   for (int w = 1; w < threads; ++w) workers_.emplace_back([this, w] { worker_loop(w); });
 }
 
 ThreadPool::~ThreadPool() {
+  wait();
   stop_.store(true);
   generation_.fetch_add(1);
   generation_.notify_all();
   for (std::thread& t : workers_) t.join();
 }
 
-void ThreadPool::dispatch(int count, Thunk thunk, void* ctx) {
+void ThreadPool::publish(int count, Thunk thunk, void* ctx, bool caller_joins) {
   thunk_ = thunk;
   ctx_ = ctx;
-  count_ = count;
-  next_item_.store(0, std::memory_order_relaxed);
+  const std::uint64_t first = caller_joins ? 0 : 1, threads = std::uint64_t(size()) - first;
+  shares_[0].range.store(0, std::memory_order_relaxed);
+  for (std::uint64_t w = 0; w < threads; ++w) {
+    const std::uint64_t begin = std::uint64_t(count) * w / threads, end = std::uint64_t(count) * (w + 1) / threads;
+    shares_[first + w].range.store(begin | end << 32, std::memory_order_relaxed);
+  }
   running_.store(int(workers_.size()));
   generation_.fetch_add(1);  // publishes the job (sequentially consistent)
   generation_.notify_all();
+}
+
+void ThreadPool::dispatch(int count, Thunk thunk, void* ctx) {
+  publish(count, thunk, ctx, true);
   take_items(0);
   while (running_.load() != 0) cpu_relax();
 }
 
 void ThreadPool::take_items(int worker) {
-  for (int i = next_item_.fetch_add(1); i < count_; i = next_item_.fetch_add(1)) {
-    thunk_(ctx_, i, worker);
+  // Its own share from the front.
+  std::atomic<std::uint64_t>& own = shares_[std::size_t(worker)].range;
+  for (std::uint64_t r = own.load(); std::uint32_t(r) < std::uint32_t(r >> 32);) {
+    if (own.compare_exchange_weak(r, r + 1)) {
+      thunk_(ctx_, int(std::uint32_t(r)), worker);
+      r = own.load();
+    }
+  }
+  // Then the others' from the back, the next thread's first.
+  const int threads = size();
+  for (int k = 1; k < threads; ++k) {
+    std::atomic<std::uint64_t>& other = shares_[std::size_t((worker + k) % threads)].range;
+    for (std::uint64_t r = other.load(); std::uint32_t(r) < std::uint32_t(r >> 32);) {
+      const std::uint64_t last = (r >> 32) - 1;
+      if (other.compare_exchange_weak(r, (r & 0xffffffffu) | last << 32)) {
+        thunk_(ctx_, int(last), worker);
+        r = other.load();
+      }
+    }
   }
 }
 

@@ -333,6 +333,47 @@ TEST(FastDifferential, ClearLaterIsAClear) {
   }
 }
 
+// Clears started ahead on a worker (clear_ahead) are the clears left pending: for every
+// list of tiles (none, some, every tile, a tile twice, tiles out of range), with draws made
+// after it that reach cleared tiles and others, deferred or at once, on 1 to 4 threads (one
+// thread: it does nothing), the image is the reference's; started again once the clears are
+// applied, it clears nothing.
+TEST(FastDifferential, ClearsStartedAheadAreTheClearsLeftPending) {
+  RandomDraws random(43);
+  const glm::ivec2 size{200, 140};  // 4 x 3 tiles, partial ones on two sides
+  const Framebuffer initial = random.framebuffer(size);
+  const glm::vec4 color{0.9f, 0.1f, 0.3f, 1.0f};
+  const std::vector<std::vector<int>> lists = {{}, {0, 5, 11}, {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}, {3, 3, 7}, {-1, 2, 12, 400}};
+  for (int threads = 1; threads <= 4; ++threads) {
+    for (bool deferred : {false, true}) {
+      for (std::size_t l = 0; l < lists.size(); ++l) {
+        RandomDraw d = random.draw(size);
+        simd_only(d);
+        VertexInput in = d.input();
+        Framebuffer ref = initial;
+        ref.clear_color(color);
+        ref.clear_depth(0.75f);
+        draw_triangles(ref, d.projection, d.viewport, d.frag, d.shade, in, nullptr, nullptr);
+        Framebuffer fast = initial;
+        PipelineContext ctx(threads);  // ends before `fast` (it may still clear it)
+        ctx.set_deferred(deferred);
+        ctx.clear_later(fast, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, color, 0.75f);
+        ctx.clear_ahead(fast, PipelineContext::PendingClears::kColor, lists[l]);
+        draw_triangles(fast, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
+        ctx.finish_draws();
+        // Drawn tiles' clears were applied: started again, it changes nothing.
+        ctx.clear_ahead(fast, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, lists[l]);
+        ctx.apply_pending_clears(fast);
+        ASSERT_EQ(compare_buffers(fast, ref), "") << threads << " threads, " << (deferred ? "deferred" : "at once")
+                                                  << ", list " << l;
+        // Started and never waited for: the context's end waits for it.
+        ctx.clear_later(fast, PipelineContext::PendingClears::kColor, color, 0.0f);
+        ctx.clear_ahead(fast, PipelineContext::PendingClears::kColor, lists[l]);
+      }
+    }
+  }
+}
+
 // Draws wait only while deferred drawing is on, and only those that own what they read.
 TEST(FastDifferential, OnlyDrawsThatOwnTheirInputsWait) {
   PipelineContext ctx(2);
