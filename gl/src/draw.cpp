@@ -191,14 +191,18 @@ struct Batch {
     s.triangles.clear();
   }
 
-  void set(std::size_t i, const PrimitiveVertex& v) {
+  // Only what the draw reads: normals when the pipeline lights, colours when lit here (or
+  // unlit), texture coordinates when textured.
+  void set(std::size_t i, const PrimitiveVertex& v, bool normals, bool colors, bool texcoords) {
     s.positions[i] = v.eye;
-    s.normals[i] = v.normal;
-    s.colors[i] = v.front;
-    s.back_colors[i] = v.back;
-    s.secondary[i] = v.front_secondary;
-    s.back_secondary[i] = v.back_secondary;
-    s.texcoords[i] = v.texcoord;
+    if (normals) s.normals[i] = v.normal;
+    if (colors) {
+      s.colors[i] = v.front;
+      s.back_colors[i] = v.back;
+      s.secondary[i] = v.front_secondary;
+      s.back_secondary[i] = v.back_secondary;
+    }
+    if (texcoords) s.texcoords[i] = v.texcoord;
   }
 
   std::uint32_t add(const PrimitiveVertex& v) {
@@ -297,12 +301,13 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   finite.resize(count);
   const bool small_projection = bounded(&projection[0][0], 16);
   const bool quads = p.mode == GL_QUADS;
+  const bool normals = p.deferred_lighting && !p.object_normals, colors = !p.deferred_lighting;
   std::atomic<bool> outside{false};
   auto vertices = [&](std::size_t begin, std::size_t end) {
     bool out = false;
     for (std::size_t i = begin; i < end; ++i) {
       const PrimitiveVertex& v = p.vertices[i];
-      batch.set(i, v);
+      batch.set(i, v, normals, colors, p.textured);
       if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
       finite[i] = finite_clip(projection, small_projection, v.eye);
       if (quads && !out) out = !inside_view_volume(projection, v.eye);
