@@ -142,14 +142,18 @@ struct ClientArrays {
   bool index_enabled = false, edge_flag_enabled = false;  // accepted, unused
 };
 
-/// One vertex of a primitive being specified: eye-space position and its colours, lit as
-/// the vertex arrived (lighting state cannot change between glBegin and glEnd).
+/// One vertex of a primitive being specified: its eye-space position, normal and texture
+/// coordinates (lighting state cannot change between glBegin and glEnd).
 struct PrimitiveVertex {
   glm::vec4 eye;
-  glm::vec3 normal{0.0f};  // eye space; kept while the primitive's lighting is deferred
+  glm::vec3 normal{0.0f};  // eye space, or as given while Primitive::object_normals
+  glm::vec2 texcoord;
+};
+
+/// A vertex's colours, lit as it arrived (or the current colour, unlit).
+struct VertexColors {
   glm::vec4 front, back;
   glm::vec3 front_secondary, back_secondary;
-  glm::vec2 texcoord;
 };
 
 /// The primitive between glBegin and glEnd, with what stays fixed while it is specified.
@@ -157,13 +161,16 @@ struct Primitive {
   bool active = false;  // inside glBegin/glEnd
   GLenum mode = GL_TRIANGLES;
   std::vector<PrimitiveVertex> vertices;
+  // The vertices' colours, one per vertex, unless lighting is deferred (then empty): records
+  // of a lit primitive are less than half as large, to write in glVertex and read in glEnd.
+  std::vector<VertexColors> colors;
   bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
   // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
   // at glBegin. A material change inside the primitive lights the vertices so far and ends
   // the deferral (settle_lighting).
   bool deferred_lighting = false;
   // While lighting is deferred (smooth shading): normals kept as given and transformed to eye
-  // space by draw_vertices on the pipeline's threads, not by each glVertex call.
+  // space by draw_vertices, not by each glVertex call.
   bool object_normals = false;
   bool textured = false;  // a texture applies: texture coordinates are kept
   // Fixed at glBegin:

@@ -150,23 +150,23 @@ const Texture* active_texture(GlContext& c) {
   return c.lighting.rescale_normal ? n * p.rescale : n;
 }
 
-void light_vertex(const GlContext& c, PrimitiveVertex& v) {
+void light_vertex(const GlContext& c, const PrimitiveVertex& v, VertexColors& out) {
   const LightingState& l = c.lighting;
   if (!l.enabled) {
     // Colours are clamped to [0, 1] per vertex (GL 1.1 section 2.13.6), before interpolation.
     glm::vec4 col = glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f));
-    v.front = v.back = col;
-    v.front_secondary = v.back_secondary = glm::vec3(0.0f);
+    out.front = out.back = col;
+    out.front_secondary = out.back_secondary = glm::vec3(0.0f);
     return;
   }
   glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
   const glm::vec3& n = v.normal;
   LitColor f = light_point(l.model, c.prim.lights, l.front, {pos, n, nullptr});
   LitColor b = l.model.two_side ? light_point(l.model, c.prim.lights, l.back, {pos, -n, nullptr}) : f;
-  v.front = sanitize(f.primary);
-  v.back = sanitize(b.primary);
-  v.front_secondary = sanitize(f.secondary);
-  v.back_secondary = sanitize(b.secondary);
+  out.front = sanitize(f.primary);
+  out.back = sanitize(b.primary);
+  out.front_secondary = sanitize(f.secondary);
+  out.back_secondary = sanitize(b.secondary);
 }
 
 // (s, t) after the texture matrix; q divides per vertex (not per fragment, see docs/gl.md).
@@ -193,25 +193,25 @@ struct Batch {
 
   // Only what the draw reads: normals when the pipeline lights, colours when lit here (or
   // unlit), texture coordinates when textured.
-  void set(std::size_t i, const PrimitiveVertex& v, bool normals, bool colors, bool texcoords) {
+  void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors, bool texcoords) {
     s.positions[i] = v.eye;
     if (normals) s.normals[i] = v.normal;
     if (colors) {
-      s.colors[i] = v.front;
-      s.back_colors[i] = v.back;
-      s.secondary[i] = v.front_secondary;
-      s.back_secondary[i] = v.back_secondary;
+      s.colors[i] = colors->front;
+      s.back_colors[i] = colors->back;
+      s.secondary[i] = colors->front_secondary;
+      s.back_secondary[i] = colors->back_secondary;
     }
     if (texcoords) s.texcoords[i] = v.texcoord;
   }
 
-  std::uint32_t add(const PrimitiveVertex& v) {
+  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors) {
     s.positions.push_back(v.eye);
     s.normals.push_back(v.normal);
-    s.colors.push_back(v.front);
-    s.back_colors.push_back(v.back);
-    s.secondary.push_back(v.front_secondary);
-    s.back_secondary.push_back(v.back_secondary);
+    s.colors.push_back(colors.front);
+    s.back_colors.push_back(colors.back);
+    s.secondary.push_back(colors.front_secondary);
+    s.back_secondary.push_back(colors.back_secondary);
     s.texcoords.push_back(v.texcoord);
     return std::uint32_t(s.positions.size() - 1);
   }
@@ -219,18 +219,15 @@ struct Batch {
 
 // A triangle whose last vertex provokes it: rotated when the provoking vertex is one of its
 // three (rotation keeps the winding), else its last vertex is repeated with the provoking
-// vertex's colours (a quad's first triangle).
-Triangle flat_triangle(const PrimitiveTriangle& t, const std::vector<PrimitiveVertex>& verts,
-                       Batch& batch) {
+// vertex's colours (a quad's first triangle; the primitive's colours, none while lighting is
+// deferred).
+Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch& batch) {
   const std::uint32_t* v = t.v;
   if (v[0] == t.provoking) return {v[1], v[2], v[0]};
   if (v[1] == t.provoking) return {v[2], v[0], v[1]};
   if (v[2] == t.provoking) return {v[0], v[1], v[2]};
-  PrimitiveVertex copy = verts[v[2]];
-  const PrimitiveVertex& p = verts[t.provoking];
-  copy.front = p.front, copy.back = p.back;
-  copy.front_secondary = p.front_secondary, copy.back_secondary = p.back_secondary;
-  return {v[0], v[1], batch.add(copy)};
+  const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
+  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors)};
 }
 
 // Marks the window-space bounds of the batch's vertices (the whole viewport when a vertex
@@ -309,7 +306,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
     const PrimitiveVertex& v = p.vertices[i];
-    batch.set(i, v, normals, colors, p.textured);
+    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured);
     if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
@@ -321,7 +318,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   bool flat = c.lighting.shade_model == GL_FLAT;
   for (const PrimitiveTriangle& t : tris) {
     if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
-    batch.s.triangles.push_back(flat ? flat_triangle(t, p.vertices, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
+    batch.s.triangles.push_back(flat ? flat_triangle(t, p, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
   }
   if (batch.s.triangles.empty()) return;
 
@@ -358,6 +355,15 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   else mark_batch(c, projection, batch.s.positions);
 }
 
+// Keeps the first element (with `first`) and the `last` last ones, in place.
+template <class T>
+void keep_ends(std::vector<T>& v, bool first, std::uint32_t last) {
+  const std::size_t kept = (first ? 1 : 0) + std::size_t(last);
+  if (v.size() <= kept) return;
+  std::copy(v.end() - last, v.end(), v.begin() + (first ? 1 : 0));  // forward: no overlap ahead
+  v.resize(kept);
+}
+
 // Draws what can be drawn of a long primitive and keeps the vertices it still needs.
 void flush_part(GlContext& c) {
   Primitive& p = c.prim;
@@ -365,10 +371,8 @@ void flush_part(GlContext& c) {
   if (f.drawable < 3) return;
   draw_vertices(c, f.drawable);
   if (p.mode == GL_TRIANGLE_STRIP && ((f.drawable - 2) & 1u)) p.odd_strip_start = !p.odd_strip_start;
-  std::vector<PrimitiveVertex> kept;
-  if (f.keep_first) kept.push_back(p.vertices.front());
-  kept.insert(kept.end(), p.vertices.end() - f.keep_last, p.vertices.end());
-  p.vertices = std::move(kept);
+  keep_ends(p.vertices, f.keep_first, f.keep_last);
+  keep_ends(p.colors, f.keep_first, f.keep_last);
 }
 
 // Rotates a triangle so that its provoking vertex comes last (the core's flat convention);
@@ -517,6 +521,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.active = true;
   p.mode = mode;
   p.vertices.clear();
+  p.colors.clear();
   p.odd_strip_start = false;
   p.modelview = c.modelview.top();
   glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
@@ -540,9 +545,11 @@ void begin_primitive(GlContext& c, GLenum mode) {
 void settle_lighting(GlContext& c) {
   Primitive& p = c.prim;
   if (!p.deferred_lighting) return;
-  for (PrimitiveVertex& v : p.vertices) {
+  p.colors.resize(p.vertices.size());
+  for (std::size_t i = 0; i < p.vertices.size(); ++i) {
+    PrimitiveVertex& v = p.vertices[i];
     if (p.object_normals) v.normal = eye_normal(c, v.normal);
-    light_vertex(c, v);
+    light_vertex(c, v, p.colors[i]);
   }
   p.deferred_lighting = false;
   p.object_normals = false;
@@ -560,7 +567,7 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   v.eye = eye;
   v.texcoord = p.textured ? texcoord(c, c.current.texcoord) : glm::vec2(0.0f);
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
-  if (!p.deferred_lighting) light_vertex(c, v);
+  if (!p.deferred_lighting) light_vertex(c, v, p.colors.emplace_back());
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
 }
 
@@ -568,6 +575,7 @@ void end_primitive(GlContext& c) {
   Primitive& p = c.prim;
   if (p.vertices.size() >= 3) draw_vertices(c, std::uint32_t(p.vertices.size()));
   p.vertices.clear();
+  p.colors.clear();
   p.active = false;
 }
 
