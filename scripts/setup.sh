@@ -13,6 +13,9 @@ PACKAGES=(
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
+  # shadelab as a GLVND vendor (libGLX_shadelab) and its tests: X11, GLVND's vendor headers,
+  # GLUT and GLU programs, Xvfb, and Mesa's own GLX vendor (llvmpipe) to compare with
+  libx11-dev libxext-dev libglvnd-dev freeglut3-dev libglu1-mesa-dev xvfb libgl1-mesa-dri libglx-mesa0
   gnuplot-nox     # bench/run.sh plots
   valgrind        # bench/instructions.sh: instructions per frame, steady on a noisy machine
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)

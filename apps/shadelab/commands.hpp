@@ -34,5 +34,6 @@ Action add_materials_command(CLI::App& app);
 Action add_gallery_command(CLI::App& app);
 Action add_shadow_matrix_command(CLI::App& app);
 Action add_serve_command(CLI::App& app);
+Action add_run_command(CLI::App& app);
 
 }  // namespace shadelab::cli

@@ -19,6 +19,7 @@ constexpr Command kCommands[] = {
     {"gallery", shadelab::cli::add_gallery_command},
     {"shadow-matrix", shadelab::cli::add_shadow_matrix_command},
     {"serve", shadelab::cli::add_serve_command},
+    {"run", shadelab::cli::add_run_command},
 };
 
 }  // namespace
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
       "  shadelab render scenes/teapot.json --shading flat --size 800x600 -o flat.png\n"
       "  shadelab sweep scenes/teapot.json --vary shading=flat,gouraud,phong -o modes.png\n"
       "  shadelab materials --sheet materials.png\n"
+      "  shadelab run --xvfb --frames 1 --capture 'out/frame%04d.png' -- ./glut_program\n"
       "Run 'shadelab COMMAND --help' for a command's options.");
   std::vector<std::pair<const char*, shadelab::cli::Action>> actions;
   for (const Command& c : kCommands) actions.emplace_back(c.name, c.add(app));

@@ -236,6 +236,20 @@ struct TileMap {
   std::vector<unsigned char> clear_row;  // scratch: a row of the clear colour, caller's format
 };
 
+/// The window-system drawable a context draws into (gl/src/platform: GLX windows, pixmaps and
+/// pbuffers), told of what the GL does that concerns it: a flush (glFlush / glFinish, after
+/// the changed pixels were presented into its image: a single-buffered window shows them
+/// then) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
+/// viewport when resized). OSMesa buffers have none.
+class SurfaceHooks {
+ public:
+  virtual void flushed(struct GlContext& c) = 0;
+  virtual void viewport_set(struct GlContext& c) = 0;
+
+ protected:
+  ~SurfaceHooks() = default;
+};
+
 struct GlContext {
   // Creation parameters
   GLenum buffer_format = GL_RGBA;
@@ -270,6 +284,8 @@ struct GlContext {
   bool ever_current = false;  // the first OSMesaMakeCurrent sets the viewport
   std::vector<std::uint8_t> depth_export;  // OSMesaGetDepthBuffer's copy
   bool depth_exported = false;
+  SurfaceHooks* surface = nullptr;  // the drawable it draws into, when a platform bound one
+  bool double_buffered = false;     // GL_DRAW_BUFFER / GL_READ_BUFFER are GL_BACK
 
   GlContext(GLenum format, int depth, int stencil, std::shared_ptr<TextureNames> shared);
 

@@ -144,7 +144,7 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: out = ints({0}); return true;
     case GL_RGBA_MODE: out = make(Kind::kBool, {1}); return true;
     case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = ints({GL_FRONT}); return true;
+    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = ints({double(c.double_buffered ? GL_BACK : GL_FRONT)}); return true;
     case GL_RENDER_MODE: out = ints({GL_RENDER}); return true;
     default: return false;
   }

@@ -154,6 +154,7 @@ void GLAPIENTRY glViewport(GLint x, GLint y, GLsizei width, GLsizei height) {
     v.y = std::clamp(y, -2 * kMaxViewportDim, 2 * kMaxViewportDim - 1);
     v.width = std::min(width, kMaxViewportDim);
     v.height = std::min(height, kMaxViewportDim);
+    if (c.surface) c.surface->viewport_set(c);
   });
 }
 

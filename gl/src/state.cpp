@@ -100,6 +100,7 @@ void finish_drawing() {
   outside_begin_end([](GlContext& c) {
     present(c);
     if (c.depth_exported) export_depth(c);
+    if (c.surface) c.surface->flushed(c);
   });
 }
 

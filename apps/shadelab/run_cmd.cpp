@@ -1,0 +1,219 @@
+// `shadelab run [OPTIONS] -- PROGRAM ARGS...`: runs an unchanged, already-built GL program on
+// shadelab (docs/platform.md). It selects shadelab's GLVND vendors and its libOSMesa.so.8 for the
+// program (found next to this executable: the build tree's gl/platform, or the installed
+// library folder), starts a private Xvfb when asked and no display is set, writes the frames the
+// program shows as PNG, ends it after N frames or at a deadline, and stops Xvfb afterwards.
+// Exit status: the program's own; 0 when it was ended after --frames N; 2 for bad arguments;
+// 1 when shadelab could not run it (no vendor library, Xvfb failed); 124 at the deadline;
+// 126/127 when the program cannot be executed or found; 128+N when signal N killed it.
+#include <signal.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+
+#include "commands.hpp"
+#include "gl/src/platform/run_link.hpp"
+#include "run_process.hpp"
+#include "shadelab/image.hpp"
+
+#ifndef SHADELAB_INSTALL_LIBDIR
+#define SHADELAB_INSTALL_LIBDIR "lib"
+#endif
+
+namespace shadelab::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunOptions {
+  bool xvfb = false;
+  std::string capture;  // printf pattern with one integer conversion
+  int frames = 0;
+  std::string size;
+  double timeout = 0;
+  std::vector<std::string> command;
+};
+
+constexpr int kExitTimeout = 124;
+
+// The folders holding libGLX_shadelab.so.0 and libOSMesa.so.8 for this executable: the build
+// tree keeps both in gl/platform beside it; an installation keeps the vendor in the library
+// folder and libOSMesa.so.8 in its shadelab/ subfolder.
+std::vector<fs::path> library_folders() {
+  std::error_code ec;
+  fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return {};
+  const fs::path dir = exe.parent_path();
+  const fs::path build = dir / "gl" / "platform";
+  if (fs::exists(build / "libGLX_shadelab.so.0")) return {build};
+  const fs::path installed = dir.parent_path() / SHADELAB_INSTALL_LIBDIR;
+  if (fs::exists(installed / "libGLX_shadelab.so.0")) return {installed, installed / "shadelab"};
+  return {};
+}
+
+// One %d (with flags and width: %04d) and no other conversion, %% aside.
+bool valid_pattern(const std::string& p) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p[i] != '%') continue;
+    if (i + 1 < p.size() && p[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < p.size() && std::strchr("0-+ ", p[j])) ++j;
+    while (j < p.size() && std::isdigit(static_cast<unsigned char>(p[j]))) ++j;
+    if (j >= p.size() || (p[j] != 'd' && p[j] != 'i' && p[j] != 'u')) return false;
+    ++conversions;
+    i = j;
+  }
+  return conversions == 1;
+}
+
+std::string frame_path(const std::string& pattern, int frame) {
+  std::vector<char> buffer(pattern.size() + 64);
+  std::snprintf(buffer.data(), buffer.size(), pattern.c_str(), frame);
+  return buffer.data();
+}
+
+bool parse_size(const std::string& text, int& width, int& height) {
+  char x = 0, extra = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) == 3 && x == 'x' && width > 0 &&
+         height > 0 && width <= 16384 && height <= 16384;
+}
+
+// Checks what CLI11 cannot; prints the error and returns false.
+bool validate(const RunOptions& o) {
+  int w = 0, h = 0;
+  const char* error = nullptr;
+  if (o.command.empty()) error = "no program given (shadelab run [OPTIONS] -- PROGRAM ARGS...)";
+  else if (!o.capture.empty() && !valid_pattern(o.capture))
+    error = "--capture: the file pattern needs exactly one frame-number conversion, e.g. 'out/frame%04d.png'";
+  else if (!o.size.empty() && !parse_size(o.size, w, h)) error = "--size: expected WIDTHxHEIGHT (e.g. 640x480)";
+  if (!error) return true;
+  std::cerr << "shadelab run: " << error << "\n";
+  return false;
+}
+
+std::string signal_name(int sig) {
+  const char* name = strsignal(sig);
+  return std::to_string(sig) + (name ? std::string(" (") + name + ")" : "");
+}
+
+// The program's environment: shadelab's vendor libraries first on the library path.
+std::vector<std::string> program_environment(const RunOptions& o, const std::vector<fs::path>& folders,
+                                             const std::string& display) {
+  std::string path;
+  for (const fs::path& f : folders) path += f.string() + ":";
+  const char* old = std::getenv("LD_LIBRARY_PATH");
+  std::vector<std::string> env = {"LD_LIBRARY_PATH=" + path + (old ? old : ""),
+                                  "__GLX_VENDOR_LIBRARY_NAME=shadelab"};
+  const fs::path egl_json = folders.front() / "shadelab.json";
+  if (fs::exists(egl_json)) env.push_back("__EGL_VENDOR_LIBRARY_FILENAMES=" + egl_json.string());
+  if (!display.empty()) env.push_back("DISPLAY=" + display);
+  if (!o.capture.empty()) env.push_back(std::string(gl::platform::run_link::kCaptureVariable) + "=1");
+  if (!o.size.empty()) env.push_back(std::string(gl::platform::run_link::kSizeVariable) + "=" + o.size);
+  return env;
+}
+
+// Writes a captured frame; false (after saying why) stops the program.
+bool write_frame(const std::string& pattern, int number, const run::Frame& frame) {
+  if (pattern.empty() || frame.rgba.empty()) return true;
+  const std::string path = frame_path(pattern, number);
+  std::error_code ec;
+  const fs::path parent = fs::path(path).parent_path();
+  if (!parent.empty()) fs::create_directories(parent, ec);
+  Image image{frame.width, frame.height, frame.rgba};
+  std::string error;
+  if (write_png(image, path, &error)) return true;
+  std::cerr << "shadelab run: --capture: " << error << "\n";
+  return false;
+}
+
+int report(const RunOptions& o, const run::ChildResult& r) {
+  using End = run::ChildResult::End;
+  const std::string& program = o.command.front();
+  switch (r.end) {
+    case End::kExited:
+      if (o.frames > 0 && r.frames < o.frames)
+        std::cerr << "shadelab run: " << program << " ended after " << r.frames << " of " << o.frames << " frames\n";
+      return r.status;
+    case End::kSignaled:
+      std::cerr << "shadelab run: " << program << " was killed by signal " << signal_name(r.status) << " after "
+                << r.frames << " frames\n";
+      return 128 + r.status;
+    case End::kFramesDone: return kExitOk;
+    case End::kFrameError: return kExitFailure;
+    case End::kTimedOut:
+      std::cerr << "shadelab run: " << program << " did not end within " << o.timeout << " s (" << r.frames
+                << " frames shown); stopped\n";
+      return kExitTimeout;
+    case End::kInterrupted: return 128 + SIGINT;
+    case End::kNotStarted:
+      std::cerr << "shadelab run: cannot run " << program << ": " << std::strerror(r.status) << "\n";
+      return r.status == ENOENT ? 127 : 126;
+  }
+  return kExitFailure;
+}
+
+int run_program(const RunOptions& o) {
+  if (!validate(o)) return kExitBadInput;
+  const std::vector<fs::path> folders = library_folders();
+  if (folders.empty()) {
+    std::cerr << "shadelab run: libGLX_shadelab.so.0 not found beside this executable (build the "
+                 "shadelab-glx target, or install shadelab)\n";
+    return kExitFailure;
+  }
+  run::Xvfb xvfb;
+  const char* display = std::getenv("DISPLAY");
+  if (o.xvfb && (!display || !*display)) {
+    int w = 1280, h = 1024;
+    if (!o.size.empty()) parse_size(o.size, w, h);
+    std::string error;
+    if (!xvfb.start(std::max(w, 1280), std::max(h, 1024), 15.0, error)) {
+      std::cerr << "shadelab run: --xvfb: " << error << "\n";
+      return kExitFailure;
+    }
+  }
+  run::ChildOptions child;
+  child.command = o.command;
+  child.environment = program_environment(o, folders, xvfb.display());
+  child.frame_socket = o.frames > 0 || !o.capture.empty();
+  child.stop_after_frames = o.frames;
+  child.timeout_seconds = o.timeout;
+  child.on_frame = [&](int n, const run::Frame& f) { return write_frame(o.capture, n, f); };
+  const int status = report(o, run::run_child(child));
+  xvfb.stop();
+  return status;
+}
+
+}  // namespace
+
+Action add_run_command(CLI::App& app) {
+  auto o = std::make_shared<RunOptions>();
+  CLI::App* sub = app.add_subcommand(
+      "run", "Run an unchanged, already-built GL program (GLX, GLUT, OSMesa) on shadelab");
+  sub->add_flag("--xvfb", o->xvfb, "Start a private Xvfb for the program when DISPLAY is not set");
+  sub->add_option("--capture", o->capture,
+                  "Write every frame the program shows as PNG: a file pattern with one frame number, "
+                  "e.g. 'out/frame%04d.png' (frames count from 1)");
+  sub->add_option("--frames", o->frames, "End the program after N frames, with exit status 0")
+      ->check(CLI::Range(1, 1 << 30));
+  sub->add_option("--size", o->size, "Resize the program's top-level windows to WIDTHxHEIGHT");
+  sub->add_option("--timeout", o->timeout, "Stop the program after S seconds (exit status 124)")
+      ->check(CLI::PositiveNumber);
+  sub->add_option("command", o->command, "-- PROGRAM ARGS...")->required();
+  sub->footer(
+      "A frame is a glXSwapBuffers, or a glFlush/glFinish of a single-buffered window.\n"
+      "Example:\n"
+      "  cc prog.c -lGL -lGLU -lglut -lm -o prog\n"
+      "  shadelab run --xvfb --frames 1 --capture 'out/frame%04d.png' -- ./prog");
+  return [o] { return run_program(*o); };
+}
+
+}  // namespace shadelab::cli
