@@ -6,6 +6,7 @@
 #include <cstring>
 #include <mutex>
 
+#include "gl/generated/exec.hpp"
 #include "gl/src/convert.hpp"
 #include "gl/src/draw.hpp"
 #include "gl/src/primitive.hpp"
@@ -162,95 +163,64 @@ bool valid_type(GLenum type, std::initializer_list<GLenum> allowed) {
   return false;
 }
 
-void set_pointer(ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
+void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
                  int min_size, int max_size, std::initializer_list<GLenum> types) {
-  outside_begin_end([&](GlContext& c) {
-    if (size < min_size || size > max_size || stride < 0) return c.set_error(GL_INVALID_VALUE);
-    if (!valid_type(type, types)) return c.set_error(GL_INVALID_ENUM);
-    a = {a.enabled, size, type, stride, ptr};
-  });
-}
-
-ClientArray* array_of(GlContext* c, int which) {
-  if (!c) return nullptr;
-  switch (which) {
-    case 0: return &c->arrays.vertex;
-    case 1: return &c->arrays.normal;
-    case 2: return &c->arrays.color;
-    default: return &c->arrays.texcoord;
-  }
+  if (size < min_size || size > max_size || stride < 0) return c.set_error(GL_INVALID_VALUE);
+  if (!valid_type(type, types)) return c.set_error(GL_INVALID_ENUM);
+  a = {a.enabled, size, type, stride, ptr};
 }
 
 }  // namespace
-}  // namespace shadelab::gl
 
-using namespace shadelab::gl;
-
-extern "C" {
-
-void GLAPIENTRY glVertexPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  if (ClientArray* a = array_of(current_context(), 0)) {
-    set_pointer(*a, size, type, stride, ptr, 2, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
-  }
+void exec::VertexPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.vertex, size, type, stride, ptr, 2, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
-void GLAPIENTRY glNormalPointer(GLenum type, GLsizei stride, const GLvoid* ptr) {
-  if (ClientArray* a = array_of(current_context(), 1)) {
-    set_pointer(*a, 3, type, stride, ptr, 3, 3, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
-  }
+void exec::NormalPointer(GlContext& c, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.normal, 3, type, stride, ptr, 3, 3, {GL_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
-void GLAPIENTRY glColorPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  if (ClientArray* a = array_of(current_context(), 2)) {
-    set_pointer(*a, size, type, stride, ptr, 3, 4,
-                {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
-                 GL_FLOAT, GL_DOUBLE});
-  }
+void exec::ColorPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.color, size, type, stride, ptr, 3, 4,
+              {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
+               GL_FLOAT, GL_DOUBLE});
 }
 
-void GLAPIENTRY glTexCoordPointer(GLint size, GLenum type, GLsizei stride, const GLvoid* ptr) {
-  if (ClientArray* a = array_of(current_context(), 3)) {
-    set_pointer(*a, size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
-  }
+void exec::TexCoordPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.texcoord, size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
 // Legal between glBegin and glEnd; outside them it only sets the current attributes.
-void GLAPIENTRY glArrayElement(GLint i) {
-  with_context([&](GlContext& c) {
-    if (i < 0) return c.set_error(GL_INVALID_VALUE);
-    array_element(c, std::size_t(i));
-  });
+void exec::ArrayElement(GlContext& c, GLint i) {
+  if (i < 0) return c.set_error(GL_INVALID_VALUE);
+  array_element(c, std::size_t(i));
 }
 
-void GLAPIENTRY glDrawArrays(GLenum mode, GLint first, GLsizei count) {
-  outside_begin_end([&](GlContext& c) {
-    if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
-    if (first < 0 || count < 0) return c.set_error(GL_INVALID_VALUE);
-    draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
-  });
+void exec::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
+  if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
+  if (first < 0 || count < 0) return c.set_error(GL_INVALID_VALUE);
+  draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
 }
 
 // Indices are used as given: like GL, shadelab cannot know how long the caller's arrays are.
-void GLAPIENTRY glDrawElements(GLenum mode, GLsizei count, GLenum type, const GLvoid* indices) {
-  outside_begin_end([&](GlContext& c) {
-    if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
-    if (count < 0) return c.set_error(GL_INVALID_VALUE);
-    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
-      return c.set_error(GL_INVALID_ENUM);
-    }
-    if (!indices) return count == 0 ? void() : c.set_error(GL_INVALID_VALUE);
-    const auto* bytes = static_cast<const unsigned char*>(indices);
-    // Aligned 32-bit indices can be read in place (as triangles, draw_array_mesh).
-    const bool aligned = type == GL_UNSIGNED_INT && reinterpret_cast<std::uintptr_t>(indices) % alignof(shadelab::Triangle) == 0;
-    draw_elements(
-        c, mode, std::size_t(count),
-        [&](std::size_t k) -> std::size_t {
-          if (type == GL_UNSIGNED_BYTE) return bytes[k];
-          if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
-          return load<GLuint>(bytes + 4 * k);
-        },
-        aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
-  });
+void exec::DrawElements(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
+  if (count < 0) return c.set_error(GL_INVALID_VALUE);
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  if (!indices) return count == 0 ? void() : c.set_error(GL_INVALID_VALUE);
+  const auto* bytes = static_cast<const unsigned char*>(indices);
+  // Aligned 32-bit indices can be read in place (as triangles, draw_array_mesh).
+  const bool aligned = type == GL_UNSIGNED_INT && reinterpret_cast<std::uintptr_t>(indices) % alignof(shadelab::Triangle) == 0;
+  draw_elements(
+      c, mode, std::size_t(count),
+      [&](std::size_t k) -> std::size_t {
+        if (type == GL_UNSIGNED_BYTE) return bytes[k];
+        if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
+        return load<GLuint>(bytes + 4 * k);
+      },
+      aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
 }
 
-}  // extern "C"
+}  // namespace shadelab::gl

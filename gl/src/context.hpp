@@ -1,6 +1,7 @@
 // GlContext: all the state of one OpenGL 1.1 context (the GL 1.1 specification's state
 // tables, chapter 6), its framebuffer and the caller's OSMesa buffer. Plain data plus the error
-// rule; the gl* entry points change it, draw.cpp hands primitives to the core pipeline.
+// rule; the exec:: functions of the GL commands change it, draw.cpp hands primitives to the
+// core pipeline.
 // No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
 #pragma once
 
@@ -304,7 +305,9 @@ inline thread_local GlContext* current_context_ __attribute__((tls_model("initia
 inline GlContext*& current_context() { return current_context_; }
 
 /// Runs `f(ctx)` on the current context, if any; exceptions (out of memory) become
-/// GL_OUT_OF_MEMORY so that nothing unwinds into C callers.
+/// GL_OUT_OF_MEMORY so that nothing unwinds into C callers. For the OSMesa calls that act on
+/// the current context; GL commands get this from their generated entry points
+/// (gl/generated/run.hpp).
 template <class F>
 void with_context(F&& f) noexcept {
   GlContext* c = current_context();
@@ -314,19 +317,6 @@ void with_context(F&& f) noexcept {
   } catch (...) {
     c->set_error(GL_OUT_OF_MEMORY);
   }
-}
-
-/// As with_context, for calls that GL forbids between glBegin and glEnd (GL 1.1 section 2.6.3):
-/// there they only record GL_INVALID_OPERATION.
-template <class F>
-void outside_begin_end(F&& f) noexcept {
-  with_context([&](GlContext& c) {
-    if (c.prim.active) {
-      c.set_error(GL_INVALID_OPERATION);
-      return;
-    }
-    f(c);
-  });
 }
 
 /// Makes the context's pipeline at first use, drawing deferred (PipelineContext::set_deferred:

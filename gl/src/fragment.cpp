@@ -9,6 +9,7 @@
 #include <array>
 #include <type_traits>
 
+#include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 
 namespace shadelab::gl {
@@ -144,113 +145,82 @@ void clear_stencil(GlContext& c) {
 }
 
 }  // namespace
-}  // namespace shadelab::gl
 
-using namespace shadelab::gl;
-
-extern "C" {
-
-void GLAPIENTRY glClearColor(GLclampf r, GLclampf g, GLclampf b, GLclampf a) {
-  outside_begin_end([&](GlContext& c) {
-    c.raster.clear_color = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
-  });
+void exec::ClearColor(GlContext& c, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
+  c.raster.clear_color = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
 }
 
-void GLAPIENTRY glClearDepth(GLclampd depth) {
-  outside_begin_end([&](GlContext& c) {
-    c.raster.clear_depth = depth == depth ? std::clamp(depth, 0.0, 1.0) : 0.0;
-  });
+void exec::ClearDepth(GlContext& c, GLdouble depth) {
+  c.raster.clear_depth = depth == depth ? std::clamp(depth, 0.0, 1.0) : 0.0;
 }
 
-void GLAPIENTRY glClearStencil(GLint s) {
-  outside_begin_end([&](GlContext& c) { c.raster.clear_stencil = s; });
-}
+void exec::ClearStencil(GlContext& c, GLint s) { c.raster.clear_stencil = s; }
 
 // Clears the whole framebuffer (shadelab has no scissor), through the colour, depth and
 // stencil write masks. The accumulation bit is accepted; there is no accumulation buffer.
-void GLAPIENTRY glClear(GLbitfield mask) {
-  outside_begin_end([&](GlContext& c) {
-    const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
-                             GL_ACCUM_BUFFER_BIT;
-    if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
-    c.tiles.ahead.clear();
-    if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
-    if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
-      clear_depth(c);
-    }
-    if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
-    // Started last: the clears above would wait for it.
-    if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
-  });
+void exec::Clear(GlContext& c, GLbitfield mask) {
+  const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
+                           GL_ACCUM_BUFFER_BIT;
+  if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
+  c.tiles.ahead.clear();
+  if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
+  if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
+    clear_depth(c);
+  }
+  if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
+  // Started last: the clears above would wait for it.
+  if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
 }
 
-void GLAPIENTRY glDepthFunc(GLenum func) {
-  outside_begin_end([&](GlContext& c) {
-    if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
-    c.raster.depth_func = func;
-  });
+void exec::DepthFunc(GlContext& c, GLenum func) {
+  if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
+  c.raster.depth_func = func;
 }
 
-void GLAPIENTRY glDepthMask(GLboolean flag) {
-  outside_begin_end([&](GlContext& c) { c.raster.depth_mask = flag != GL_FALSE; });
+void exec::DepthMask(GlContext& c, GLboolean flag) { c.raster.depth_mask = flag != GL_FALSE; }
+
+void exec::ColorMask(GlContext& c, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
+  c.raster.color_mask = {r != 0, g != 0, b != 0, a != 0};
 }
 
-void GLAPIENTRY glColorMask(GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
-  outside_begin_end([&](GlContext& c) { c.raster.color_mask = {r != 0, g != 0, b != 0, a != 0}; });
+void exec::BlendFunc(GlContext& c, GLenum sfactor, GLenum dfactor) {
+  if (!is_blend_factor(sfactor) || !is_blend_factor(dfactor)) return c.set_error(GL_INVALID_ENUM);
+  c.raster.blend_src = sfactor;
+  c.raster.blend_dst = dfactor;
 }
 
-void GLAPIENTRY glBlendFunc(GLenum sfactor, GLenum dfactor) {
-  outside_begin_end([&](GlContext& c) {
-    if (!is_blend_factor(sfactor) || !is_blend_factor(dfactor)) return c.set_error(GL_INVALID_ENUM);
-    c.raster.blend_src = sfactor;
-    c.raster.blend_dst = dfactor;
-  });
+void exec::CullFace(GlContext& c, GLenum mode) {
+  if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return c.set_error(GL_INVALID_ENUM);
+  c.raster.cull_mode = mode;
 }
 
-void GLAPIENTRY glCullFace(GLenum mode) {
-  outside_begin_end([&](GlContext& c) {
-    if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) return c.set_error(GL_INVALID_ENUM);
-    c.raster.cull_mode = mode;
-  });
-}
-
-void GLAPIENTRY glFrontFace(GLenum mode) {
-  outside_begin_end([&](GlContext& c) {
-    if (mode != GL_CW && mode != GL_CCW) return c.set_error(GL_INVALID_ENUM);
-    c.raster.front_face = mode;
-  });
+void exec::FrontFace(GlContext& c, GLenum mode) {
+  if (mode != GL_CW && mode != GL_CCW) return c.set_error(GL_INVALID_ENUM);
+  c.raster.front_face = mode;
 }
 
 // The reference is clamped to the stencil range [0, 255] (GL 1.1 section 4.1.4).
-void GLAPIENTRY glStencilFunc(GLenum func, GLint ref, GLuint mask) {
-  outside_begin_end([&](GlContext& c) {
-    if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
-    c.raster.stencil_func = func;
-    c.raster.stencil_ref = std::clamp(ref, 0, 255);
-    c.raster.stencil_value_mask = mask;
-  });
+void exec::StencilFunc(GlContext& c, GLenum func, GLint ref, GLuint mask) {
+  if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
+  c.raster.stencil_func = func;
+  c.raster.stencil_ref = std::clamp(ref, 0, 255);
+  c.raster.stencil_value_mask = mask;
 }
 
-void GLAPIENTRY glStencilOp(GLenum fail, GLenum zfail, GLenum zpass) {
-  outside_begin_end([&](GlContext& c) {
-    if (!is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass)) {
-      return c.set_error(GL_INVALID_ENUM);
-    }
-    c.raster.stencil_fail = fail;
-    c.raster.stencil_zfail = zfail;
-    c.raster.stencil_zpass = zpass;
-  });
+void exec::StencilOp(GlContext& c, GLenum fail, GLenum zfail, GLenum zpass) {
+  if (!is_stencil_op(fail) || !is_stencil_op(zfail) || !is_stencil_op(zpass)) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  c.raster.stencil_fail = fail;
+  c.raster.stencil_zfail = zfail;
+  c.raster.stencil_zpass = zpass;
 }
 
-void GLAPIENTRY glStencilMask(GLuint mask) {
-  outside_begin_end([&](GlContext& c) { c.raster.stencil_write_mask = mask; });
+void exec::StencilMask(GlContext& c, GLuint mask) { c.raster.stencil_write_mask = mask; }
+
+void exec::PolygonOffset(GlContext& c, GLfloat factor, GLfloat units) {
+  c.raster.offset_factor = factor;
+  c.raster.offset_units = units;
 }
 
-void GLAPIENTRY glPolygonOffset(GLfloat factor, GLfloat units) {
-  outside_begin_end([&](GlContext& c) {
-    c.raster.offset_factor = factor;
-    c.raster.offset_units = units;
-  });
-}
-
-}  // extern "C"
+}  // namespace shadelab::gl

@@ -5,6 +5,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/generated/exec.hpp"
+#include "gl/generated/version.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
 
@@ -188,45 +190,38 @@ T convert(double v, Kind kind) {
 }
 
 template <class T>
-void get(GLenum pname, T* params) {
-  outside_begin_end([&](GlContext& c) {
-    Values v;
-    if (!query(c, pname, v)) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    for (int i = 0; i < v.n; ++i) params[i] = convert<T>(v.v[i], v.kind);
-  });
+void get(GlContext& c, GLenum pname, T* params) {
+  Values v;
+  if (!query(c, pname, v)) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  for (int i = 0; i < v.n; ++i) params[i] = convert<T>(v.v[i], v.kind);
 }
 
 }  // namespace
-}  // namespace shadelab::gl
 
-using namespace shadelab::gl;
+void exec::GetBooleanv(GlContext& c, GLenum pname, GLboolean* params) { get(c, pname, params); }
+void exec::GetIntegerv(GlContext& c, GLenum pname, GLint* params) { get(c, pname, params); }
+void exec::GetFloatv(GlContext& c, GLenum pname, GLfloat* params) { get(c, pname, params); }
+void exec::GetDoublev(GlContext& c, GLenum pname, GLdouble* params) { get(c, pname, params); }
 
-extern "C" {
-
-void GLAPIENTRY glGetBooleanv(GLenum pname, GLboolean* params) { get(pname, params); }
-void GLAPIENTRY glGetIntegerv(GLenum pname, GLint* params) { get(pname, params); }
-void GLAPIENTRY glGetFloatv(GLenum pname, GLfloat* params) { get(pname, params); }
-void GLAPIENTRY glGetDoublev(GLenum pname, GLdouble* params) { get(pname, params); }
-
-const GLubyte* GLAPIENTRY glGetString(GLenum name) {
+// GL_VERSION is that of the newest OpenGL version whose every command is implemented
+// (gl/api/pending.txt; SHADELAB_GL_VERSION_NUMBER is generated from it).
+const GLubyte* exec::GetString(GlContext& c, GLenum name) {
   static const char* const kVendor = "shadelab";
   static const char* const kRenderer = "shadelab software rasterizer (OpenGL 1.1 fixed function)";
-  static const char* const kVersion = "1.1 shadelab " SHADELAB_VERSION;
+  static const char* const kVersion = SHADELAB_GL_VERSION_NUMBER " shadelab " SHADELAB_VERSION;
   static const char* const kExtensions =
       "GL_EXT_bgra GL_EXT_rescale_normal GL_EXT_separate_specular_color "
       "GL_SGIS_texture_edge_clamp GL_ARB_texture_non_power_of_two";
   const char* result = nullptr;
-  outside_begin_end([&](GlContext& c) {
-    switch (name) {
-      case GL_VENDOR: result = kVendor; break;
-      case GL_RENDERER: result = kRenderer; break;
-      case GL_VERSION: result = kVersion; break;
-      case GL_EXTENSIONS: result = kExtensions; break;
-      default: c.set_error(GL_INVALID_ENUM);
-    }
-  });
+  switch (name) {
+    case GL_VENDOR: result = kVendor; break;
+    case GL_RENDERER: result = kRenderer; break;
+    case GL_VERSION: result = kVersion; break;
+    case GL_EXTENSIONS: result = kExtensions; break;
+    default: c.set_error(GL_INVALID_ENUM);
+  }
   return reinterpret_cast<const GLubyte*>(result);
 }
 
-}  // extern "C"
+}  // namespace shadelab::gl

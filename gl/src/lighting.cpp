@@ -3,6 +3,7 @@
 // directions go to eye space here. The lighting equation itself is the core's light_point.
 #include <glm/mat3x3.hpp>
 
+#include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
 
@@ -60,50 +61,46 @@ void set_light(GlContext& c, Light& l, GLenum pname, const float* p) {
 // Shared by the four glLight variants. `scalar`: glLightf/glLighti, which take only the
 // single-valued parameters. Integer colours map to [-1, 1]; other integers convert directly.
 template <class T>
-void light_call(GLenum light, GLenum pname, const T* params, bool scalar) {
-  outside_begin_end([&](GlContext& c) {
-    int n = light_param_count(pname);
-    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights || n == 0 || (scalar && n != 1)) {
-      return c.set_error(GL_INVALID_ENUM);
+void light_call(GlContext& c, GLenum light, GLenum pname, const T* params, bool scalar) {
+  int n = light_param_count(pname);
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights || n == 0 || (scalar && n != 1)) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  float v[4] = {0, 0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    if constexpr (std::is_integral_v<T>) {
+      v[i] = is_color_param(pname) ? int_to_color(params[i]) : float(params[i]);
+    } else {
+      v[i] = float(params[i]);
     }
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    float v[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i) {
-      if constexpr (std::is_integral_v<T>) {
-        v[i] = is_color_param(pname) ? int_to_color(params[i]) : float(params[i]);
-      } else {
-        v[i] = float(params[i]);
-      }
-    }
-    if (!light_value_ok(pname, v[0])) return c.set_error(GL_INVALID_VALUE);
-    set_light(c, c.lighting.lights[light - GL_LIGHT0], pname, v);
-  });
+  }
+  if (!light_value_ok(pname, v[0])) return c.set_error(GL_INVALID_VALUE);
+  set_light(c, c.lighting.lights[light - GL_LIGHT0], pname, v);
 }
 
 template <class T>
-void light_model_call(GLenum pname, const T* params, bool scalar) {
-  outside_begin_end([&](GlContext& c) {
-    LightModel& m = c.lighting.model;
-    bool known = pname == GL_LIGHT_MODEL_AMBIENT || pname == GL_LIGHT_MODEL_LOCAL_VIEWER ||
-                 pname == GL_LIGHT_MODEL_TWO_SIDE || pname == GL_LIGHT_MODEL_COLOR_CONTROL;
-    if (!known || (scalar && pname == GL_LIGHT_MODEL_AMBIENT)) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    if (pname == GL_LIGHT_MODEL_AMBIENT) {
-      for (int i = 0; i < 4; ++i) {
-        if constexpr (std::is_integral_v<T>) {
-          m.ambient[i] = int_to_color(params[i]);
-        } else {
-          m.ambient[i] = float(params[i]);
-        }
+void light_model_call(GlContext& c, GLenum pname, const T* params, bool scalar) {
+  LightModel& m = c.lighting.model;
+  bool known = pname == GL_LIGHT_MODEL_AMBIENT || pname == GL_LIGHT_MODEL_LOCAL_VIEWER ||
+               pname == GL_LIGHT_MODEL_TWO_SIDE || pname == GL_LIGHT_MODEL_COLOR_CONTROL;
+  if (!known || (scalar && pname == GL_LIGHT_MODEL_AMBIENT)) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  if (pname == GL_LIGHT_MODEL_AMBIENT) {
+    for (int i = 0; i < 4; ++i) {
+      if constexpr (std::is_integral_v<T>) {
+        m.ambient[i] = int_to_color(params[i]);
+      } else {
+        m.ambient[i] = float(params[i]);
       }
-    } else if (pname == GL_LIGHT_MODEL_COLOR_CONTROL) {
-      double v = double(params[0]);
-      if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR) return c.set_error(GL_INVALID_ENUM);
-      m.separate_specular = v == GL_SEPARATE_SPECULAR_COLOR;
-    } else {
-      (pname == GL_LIGHT_MODEL_LOCAL_VIEWER ? m.local_viewer : m.two_side) = params[0] != T(0);
     }
-  });
+  } else if (pname == GL_LIGHT_MODEL_COLOR_CONTROL) {
+    double v = double(params[0]);
+    if (v != GL_SINGLE_COLOR && v != GL_SEPARATE_SPECULAR_COLOR) return c.set_error(GL_INVALID_ENUM);
+    m.separate_specular = v == GL_SEPARATE_SPECULAR_COLOR;
+  } else {
+    (pname == GL_LIGHT_MODEL_LOCAL_VIEWER ? m.local_viewer : m.two_side) = params[0] != T(0);
+  }
 }
 
 int material_param_count(GLenum pname) {
@@ -138,29 +135,25 @@ void set_material(const LightingState& l, Material& m, bool front, GLenum pname,
   }
 }
 
-// glMaterial is legal between glBegin and glEnd: it changes the material of the vertices
-// that follow (GL 1.1 section 2.6.3).
 template <class T>
-void material_call(GLenum face, GLenum pname, const T* params, bool scalar) {
-  with_context([&](GlContext& c) {
-    int n = material_param_count(pname);
-    bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
-    if (!face_ok || n == 0 || (scalar && pname != GL_SHININESS)) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    float v[4] = {0, 0, 0, 0};
-    for (int i = 0; i < n; ++i) {
-      if constexpr (std::is_integral_v<T>) {
-        v[i] = is_color_param(pname) ? int_to_color(params[i]) : float(params[i]);
-      } else {
-        v[i] = float(params[i]);
-      }
+void material_call(GlContext& c, GLenum face, GLenum pname, const T* params, bool scalar) {
+  int n = material_param_count(pname);
+  bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
+  if (!face_ok || n == 0 || (scalar && pname != GL_SHININESS)) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  float v[4] = {0, 0, 0, 0};
+  for (int i = 0; i < n; ++i) {
+    if constexpr (std::is_integral_v<T>) {
+      v[i] = is_color_param(pname) ? int_to_color(params[i]) : float(params[i]);
+    } else {
+      v[i] = float(params[i]);
     }
-    if (pname == GL_SHININESS && !(v[0] >= 0.0f && v[0] <= 128.0f)) return c.set_error(GL_INVALID_VALUE);
-    LightingState& l = c.lighting;
-    if (c.prim.active) settle_lighting(c);  // earlier vertices keep the material they had
-    if (face != GL_BACK) set_material(l, l.front, true, pname, v);
-    if (face != GL_FRONT) set_material(l, l.back, false, pname, v);
-  });
+  }
+  if (pname == GL_SHININESS && !(v[0] >= 0.0f && v[0] <= 128.0f)) return c.set_error(GL_INVALID_VALUE);
+  LightingState& l = c.lighting;
+  if (c.prim.active) settle_lighting(c);  // earlier vertices keep the material they had
+  if (face != GL_BACK) set_material(l, l.front, true, pname, v);
+  if (face != GL_FRONT) set_material(l, l.back, false, pname, v);
 }
 
 // Values of glGetLight; returns the count (0: unknown pname). `color` tells glGetLightiv to
@@ -204,75 +197,64 @@ int get_material(const Material& m, GLenum pname, float* out, bool& color) {
 }
 
 template <class T>
-void get_light_call(GLenum light, GLenum pname, T* params) {
-  outside_begin_end([&](GlContext& c) {
-    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) return c.set_error(GL_INVALID_ENUM);
-    float v[4];
-    bool color = false;
-    int n = get_light(c.lighting.lights[light - GL_LIGHT0], pname, v, color);
-    if (n == 0) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_gl_values(v, n, color, params);
-  });
+void get_light_call(GlContext& c, GLenum light, GLenum pname, T* params) {
+  if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights) return c.set_error(GL_INVALID_ENUM);
+  float v[4];
+  bool color = false;
+  int n = get_light(c.lighting.lights[light - GL_LIGHT0], pname, v, color);
+  if (n == 0) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  write_gl_values(v, n, color, params);
 }
 
 template <class T>
-void get_material_call(GLenum face, GLenum pname, T* params) {
-  outside_begin_end([&](GlContext& c) {
-    if (face != GL_FRONT && face != GL_BACK) return c.set_error(GL_INVALID_ENUM);
-    float v[4];
-    bool color = false;
-    int n = get_material(face == GL_FRONT ? c.lighting.front : c.lighting.back, pname, v, color);
-    if (n == 0) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_gl_values(v, n, color, params);
-  });
+void get_material_call(GlContext& c, GLenum face, GLenum pname, T* params) {
+  if (face != GL_FRONT && face != GL_BACK) return c.set_error(GL_INVALID_ENUM);
+  float v[4];
+  bool color = false;
+  int n = get_material(face == GL_FRONT ? c.lighting.front : c.lighting.back, pname, v, color);
+  if (n == 0) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  write_gl_values(v, n, color, params);
 }
 
 }  // namespace
+
+void exec::Lightf(GlContext& c, GLenum light, GLenum pname, GLfloat param) { light_call(c, light, pname, &param, true); }
+void exec::Lighti(GlContext& c, GLenum light, GLenum pname, GLint param) { light_call(c, light, pname, &param, true); }
+void exec::Lightfv(GlContext& c, GLenum light, GLenum pname, const GLfloat* params) { light_call(c, light, pname, params, false); }
+void exec::Lightiv(GlContext& c, GLenum light, GLenum pname, const GLint* params) { light_call(c, light, pname, params, false); }
+
+void exec::LightModelf(GlContext& c, GLenum pname, GLfloat param) { light_model_call(c, pname, &param, true); }
+void exec::LightModeli(GlContext& c, GLenum pname, GLint param) { light_model_call(c, pname, &param, true); }
+void exec::LightModelfv(GlContext& c, GLenum pname, const GLfloat* params) { light_model_call(c, pname, params, false); }
+void exec::LightModeliv(GlContext& c, GLenum pname, const GLint* params) { light_model_call(c, pname, params, false); }
+
+// glMaterial is legal between glBegin and glEnd: it changes the material of the vertices
+// that follow (GL 1.1 section 2.6.3).
+void exec::Materialf(GlContext& c, GLenum face, GLenum pname, GLfloat param) { material_call(c, face, pname, &param, true); }
+void exec::Materiali(GlContext& c, GLenum face, GLenum pname, GLint param) { material_call(c, face, pname, &param, true); }
+void exec::Materialfv(GlContext& c, GLenum face, GLenum pname, const GLfloat* params) { material_call(c, face, pname, params, false); }
+void exec::Materialiv(GlContext& c, GLenum face, GLenum pname, const GLint* params) { material_call(c, face, pname, params, false); }
+
+void exec::GetLightfv(GlContext& c, GLenum light, GLenum pname, GLfloat* params) { get_light_call(c, light, pname, params); }
+void exec::GetLightiv(GlContext& c, GLenum light, GLenum pname, GLint* params) { get_light_call(c, light, pname, params); }
+void exec::GetMaterialfv(GlContext& c, GLenum face, GLenum pname, GLfloat* params) { get_material_call(c, face, pname, params); }
+void exec::GetMaterialiv(GlContext& c, GLenum face, GLenum pname, GLint* params) { get_material_call(c, face, pname, params); }
+
+void exec::ColorMaterial(GlContext& c, GLenum face, GLenum mode) {
+  bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
+  bool mode_ok = mode == GL_EMISSION || mode == GL_AMBIENT || mode == GL_DIFFUSE ||
+                 mode == GL_SPECULAR || mode == GL_AMBIENT_AND_DIFFUSE;
+  if (!face_ok || !mode_ok) return c.set_error(GL_INVALID_ENUM);
+  c.lighting.color_material_face = face;
+  c.lighting.color_material_mode = mode;
+  apply_color_material(c);
+}
+
+void exec::ShadeModel(GlContext& c, GLenum mode) {
+  if (mode != GL_FLAT && mode != GL_SMOOTH) return c.set_error(GL_INVALID_ENUM);
+  c.lighting.shade_model = mode;
+}
+
 }  // namespace shadelab::gl
-
-using namespace shadelab::gl;
-
-extern "C" {
-
-void GLAPIENTRY glLightf(GLenum light, GLenum pname, GLfloat param) { light_call(light, pname, &param, true); }
-void GLAPIENTRY glLighti(GLenum light, GLenum pname, GLint param) { light_call(light, pname, &param, true); }
-void GLAPIENTRY glLightfv(GLenum light, GLenum pname, const GLfloat* params) { light_call(light, pname, params, false); }
-void GLAPIENTRY glLightiv(GLenum light, GLenum pname, const GLint* params) { light_call(light, pname, params, false); }
-
-void GLAPIENTRY glLightModelf(GLenum pname, GLfloat param) { light_model_call(pname, &param, true); }
-void GLAPIENTRY glLightModeli(GLenum pname, GLint param) { light_model_call(pname, &param, true); }
-void GLAPIENTRY glLightModelfv(GLenum pname, const GLfloat* params) { light_model_call(pname, params, false); }
-void GLAPIENTRY glLightModeliv(GLenum pname, const GLint* params) { light_model_call(pname, params, false); }
-
-void GLAPIENTRY glMaterialf(GLenum face, GLenum pname, GLfloat param) { material_call(face, pname, &param, true); }
-void GLAPIENTRY glMateriali(GLenum face, GLenum pname, GLint param) { material_call(face, pname, &param, true); }
-void GLAPIENTRY glMaterialfv(GLenum face, GLenum pname, const GLfloat* params) { material_call(face, pname, params, false); }
-void GLAPIENTRY glMaterialiv(GLenum face, GLenum pname, const GLint* params) { material_call(face, pname, params, false); }
-
-void GLAPIENTRY glGetLightfv(GLenum light, GLenum pname, GLfloat* params) { get_light_call(light, pname, params); }
-void GLAPIENTRY glGetLightiv(GLenum light, GLenum pname, GLint* params) { get_light_call(light, pname, params); }
-void GLAPIENTRY glGetMaterialfv(GLenum face, GLenum pname, GLfloat* params) { get_material_call(face, pname, params); }
-void GLAPIENTRY glGetMaterialiv(GLenum face, GLenum pname, GLint* params) { get_material_call(face, pname, params); }
-
-void GLAPIENTRY glColorMaterial(GLenum face, GLenum mode) {
-  outside_begin_end([&](GlContext& c) {
-    bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
-    bool mode_ok = mode == GL_EMISSION || mode == GL_AMBIENT || mode == GL_DIFFUSE ||
-                   mode == GL_SPECULAR || mode == GL_AMBIENT_AND_DIFFUSE;
-    if (!face_ok || !mode_ok) return c.set_error(GL_INVALID_ENUM);
-    c.lighting.color_material_face = face;
-    c.lighting.color_material_mode = mode;
-    apply_color_material(c);
-  });
-}
-
-void GLAPIENTRY glShadeModel(GLenum mode) {
-  outside_begin_end([&](GlContext& c) {
-    if (mode != GL_FLAT && mode != GL_SMOOTH) return c.set_error(GL_INVALID_ENUM);
-    c.lighting.shade_model = mode;
-  });
-}
-
-}  // extern "C"

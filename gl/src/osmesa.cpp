@@ -7,6 +7,7 @@
 #include <new>
 
 #include "gl/src/osmesa_context.hpp"
+#include "gl/src/proc_table.hpp"
 
 using namespace shadelab::gl;
 
@@ -197,5 +198,10 @@ GLboolean GLAPIENTRY OSMesaGetColorBuffer(OSMesaContext c, GLint* width, GLint* 
 
 // Colours are always clamped to [0, 1]: there is nothing to switch.
 void GLAPIENTRY OSMesaColorClamp(GLboolean /*enable*/) {}
+
+// Every gl* and OSMesa* function of the library (the generated table, proc_table.hpp).
+OSMESAproc GLAPIENTRY OSMesaGetProcAddress(const char* funcName) {
+  return reinterpret_cast<OSMESAproc>(find_proc(funcName));
+}
 
 }  // extern "C"

@@ -2,6 +2,8 @@
 // glReadPixels, which packs the framebuffer into client memory. Reads the framebuffer only.
 #include "gl/src/pixels.hpp"
 
+#include "gl/generated/exec.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -156,40 +158,33 @@ int read_components(GLenum format) {
 }
 
 }  // namespace
-}  // namespace shadelab::gl
-
-using namespace shadelab::gl;
-
-extern "C" {
 
 // Pixels outside the framebuffer are left as they are in client memory (GL leaves them
 // undefined).
-void GLAPIENTRY glReadPixels(GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
-                             GLenum type, GLvoid* pixels) {
-  outside_begin_end([&](GlContext& c) {
-    if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
-    if (format == GL_COLOR_INDEX) return c.set_error(GL_INVALID_OPERATION);  // RGBA mode
-    int n = read_components(format), size = pixel_type_size(type);
-    if (n == 0 || size == 0) return c.set_error(GL_INVALID_ENUM);
-    if ((format == GL_DEPTH_COMPONENT && c.depth_bits == 0) ||
-        (format == GL_STENCIL_INDEX && c.stencil_bits == 0)) {
-      return c.set_error(GL_INVALID_OPERATION);
+void exec::ReadPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
+                      GLenum type, void* pixels) {
+  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
+  if (format == GL_COLOR_INDEX) return c.set_error(GL_INVALID_OPERATION);  // RGBA mode
+  int n = read_components(format), size = pixel_type_size(type);
+  if (n == 0 || size == 0) return c.set_error(GL_INVALID_ENUM);
+  if ((format == GL_DEPTH_COMPONENT && c.depth_bits == 0) ||
+      (format == GL_STENCIL_INDEX && c.stencil_bits == 0)) {
+    return c.set_error(GL_INVALID_OPERATION);
+  }
+  if (width == 0 || height == 0) return;
+  if (!pixels) return c.set_error(GL_INVALID_VALUE);
+  settle_clears(c);
+  PixelLayout layout = pixel_layout(c.pack, n, size, width);
+  auto* out = static_cast<unsigned char*>(pixels);
+  int x0 = std::max(0, -x), y0 = std::max(0, -y);
+  int x1 = int(std::min<long long>(width, (long long)c.fb.width - x));
+  int y1 = int(std::min<long long>(height, (long long)c.fb.height - y));
+  for (int j = y0; j < y1; ++j) {
+    for (int i = x0; i < x1; ++i) {
+      std::size_t px = std::size_t(y + j) * std::size_t(c.fb.width) + std::size_t(x + i);
+      pack_pixel(c, px, format, type, out + layout.offset(i, j));
     }
-    if (width == 0 || height == 0) return;
-    if (!pixels) return c.set_error(GL_INVALID_VALUE);
-    settle_clears(c);
-    PixelLayout layout = pixel_layout(c.pack, n, size, width);
-    auto* out = static_cast<unsigned char*>(pixels);
-    int x0 = std::max(0, -x), y0 = std::max(0, -y);
-    int x1 = int(std::min<long long>(width, (long long)c.fb.width - x));
-    int y1 = int(std::min<long long>(height, (long long)c.fb.height - y));
-    for (int j = y0; j < y1; ++j) {
-      for (int i = x0; i < x1; ++i) {
-        std::size_t px = std::size_t(y + j) * std::size_t(c.fb.width) + std::size_t(x + i);
-        pack_pixel(c, px, format, type, out + layout.offset(i, j));
-      }
-    }
-  });
+  }
 }
 
-}  // extern "C"
+}  // namespace shadelab::gl

@@ -1,5 +1,6 @@
 // glEnable/glDisable/glIsEnabled, client state, glGetError, glHint, glPixelStore, glFinish and
 // glFlush (GL 1.1 sections 2.5, 2.8, 5.6, 5.5, 3.6.1). State only; nothing is drawn here.
+#include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 
 namespace shadelab::gl {
@@ -44,21 +45,17 @@ bool* client_capability_flag(GlContext& c, GLenum cap) {
 
 namespace {
 
-void set_cap(GLenum cap, bool on) {
-  outside_begin_end([&](GlContext& c) {
-    bool* flag = capability_flag(c, cap);
-    if (!flag) return c.set_error(GL_INVALID_ENUM);
-    *flag = on;
-    if (cap == GL_COLOR_MATERIAL && on) apply_color_material(c);
-  });
+void set_cap(GlContext& c, GLenum cap, bool on) {
+  bool* flag = capability_flag(c, cap);
+  if (!flag) return c.set_error(GL_INVALID_ENUM);
+  *flag = on;
+  if (cap == GL_COLOR_MATERIAL && on) apply_color_material(c);
 }
 
-void set_client_cap(GLenum cap, bool on) {
-  outside_begin_end([&](GlContext& c) {
-    bool* flag = client_capability_flag(c, cap);
-    if (!flag) return c.set_error(GL_INVALID_ENUM);
-    *flag = on;
-  });
+void set_client_cap(GlContext& c, GLenum cap, bool on) {
+  bool* flag = client_capability_flag(c, cap);
+  if (!flag) return c.set_error(GL_INVALID_ENUM);
+  *flag = on;
 }
 
 int hint_slot(GLenum target) {
@@ -73,88 +70,73 @@ int hint_slot(GLenum target) {
 }
 
 // glPixelStore (GL 1.1 section 3.6.1): alignment 1, 2, 4 or 8; lengths and skips >= 0.
-void pixel_store(GLenum pname, double value) {
-  outside_begin_end([&](GlContext& c) {
-    bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
-    bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
-    if (!pack && !unpack) return c.set_error(GL_INVALID_ENUM);
-    PixelStore& s = pack ? c.pack : c.unpack;
-    GLenum base = pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES;
-    GLenum which = pname - base;  // 0 swap, 1 lsb, 2 row length, 3 skip rows, 4 skip pixels, 5 align
-    if (which <= 1) {
-      (which == 0 ? s.swap_bytes : s.lsb_first) = value != 0.0;
-      return;
-    }
-    if (!(value >= 0.0 && value <= 1e9)) return c.set_error(GL_INVALID_VALUE);
-    GLint v = GLint(value + 0.5);
-    if (which == 5) {
-      if (v != 1 && v != 2 && v != 4 && v != 8) return c.set_error(GL_INVALID_VALUE);
-      s.alignment = v;
-    } else {
-      (which == 2 ? s.row_length : which == 3 ? s.skip_rows : s.skip_pixels) = v;
-    }
-  });
+void pixel_store(GlContext& c, GLenum pname, double value) {
+  bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
+  bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
+  if (!pack && !unpack) return c.set_error(GL_INVALID_ENUM);
+  PixelStore& s = pack ? c.pack : c.unpack;
+  GLenum base = pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES;
+  GLenum which = pname - base;  // 0 swap, 1 lsb, 2 row length, 3 skip rows, 4 skip pixels, 5 align
+  if (which <= 1) {
+    (which == 0 ? s.swap_bytes : s.lsb_first) = value != 0.0;
+    return;
+  }
+  if (!(value >= 0.0 && value <= 1e9)) return c.set_error(GL_INVALID_VALUE);
+  GLint v = GLint(value + 0.5);
+  if (which == 5) {
+    if (v != 1 && v != 2 && v != 4 && v != 8) return c.set_error(GL_INVALID_VALUE);
+    s.alignment = v;
+  } else {
+    (which == 2 ? s.row_length : which == 3 ? s.skip_rows : s.skip_pixels) = v;
+  }
 }
 
-void finish_drawing() {
-  outside_begin_end([](GlContext& c) {
-    present(c);
-    if (c.depth_exported) export_depth(c);
-    if (c.surface) c.surface->flushed(c);
-  });
+void finish_drawing(GlContext& c) {
+  present(c);
+  if (c.depth_exported) export_depth(c);
+  if (c.surface) c.surface->flushed(c);
 }
 
 }  // namespace
-}  // namespace shadelab::gl
 
-using namespace shadelab::gl;
+void exec::Enable(GlContext& c, GLenum cap) { set_cap(c, cap, true); }
+void exec::Disable(GlContext& c, GLenum cap) { set_cap(c, cap, false); }
+void exec::EnableClientState(GlContext& c, GLenum cap) { set_client_cap(c, cap, true); }
+void exec::DisableClientState(GlContext& c, GLenum cap) { set_client_cap(c, cap, false); }
 
-extern "C" {
-
-void GLAPIENTRY glEnable(GLenum cap) { set_cap(cap, true); }
-void GLAPIENTRY glDisable(GLenum cap) { set_cap(cap, false); }
-void GLAPIENTRY glEnableClientState(GLenum cap) { set_client_cap(cap, true); }
-void GLAPIENTRY glDisableClientState(GLenum cap) { set_client_cap(cap, false); }
-
-GLboolean GLAPIENTRY glIsEnabled(GLenum cap) {
-  GLboolean result = GL_FALSE;
-  outside_begin_end([&](GlContext& c) {
-    bool* flag = capability_flag(c, cap);
-    if (!flag) flag = client_capability_flag(c, cap);
-    if (!flag) return c.set_error(GL_INVALID_ENUM);
-    result = *flag ? GL_TRUE : GL_FALSE;
-  });
-  return result;
+GLboolean exec::IsEnabled(GlContext& c, GLenum cap) {
+  bool* flag = capability_flag(c, cap);
+  if (!flag) flag = client_capability_flag(c, cap);
+  if (!flag) {
+    c.set_error(GL_INVALID_ENUM);
+    return GL_FALSE;
+  }
+  return *flag ? GL_TRUE : GL_FALSE;
 }
 
 // Returns and clears the recorded error. Between glBegin and glEnd it is itself an error and
-// returns 0, as Mesa does.
-GLenum GLAPIENTRY glGetError(void) {
-  GLenum result = GL_NO_ERROR;
-  outside_begin_end([&](GlContext& c) {
-    result = c.error;
-    c.error = GL_NO_ERROR;
-  });
+// returns 0, as Mesa does (the entry point's rule).
+GLenum exec::GetError(GlContext& c) {
+  GLenum result = c.error;
+  c.error = GL_NO_ERROR;
   return result;
 }
 
-void GLAPIENTRY glHint(GLenum target, GLenum mode) {
-  outside_begin_end([&](GlContext& c) {
-    int slot = hint_slot(target);
-    if (slot < 0 || (mode != GL_DONT_CARE && mode != GL_FASTEST && mode != GL_NICEST)) {
-      return c.set_error(GL_INVALID_ENUM);
-    }
-    c.hints[std::size_t(slot)] = mode;
-  });
+void exec::Hint(GlContext& c, GLenum target, GLenum mode) {
+  int slot = hint_slot(target);
+  if (slot < 0 || (mode != GL_DONT_CARE && mode != GL_FASTEST && mode != GL_NICEST)) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  c.hints[std::size_t(slot)] = mode;
 }
 
-void GLAPIENTRY glPixelStorei(GLenum pname, GLint param) { pixel_store(pname, param); }
-void GLAPIENTRY glPixelStoref(GLenum pname, GLfloat param) { pixel_store(pname, param); }
+void exec::PixelStorei(GlContext& c, GLenum pname, GLint param) { pixel_store(c, pname, param); }
+void exec::PixelStoref(GlContext& c, GLenum pname, GLfloat param) { pixel_store(c, pname, param); }
 
 // Drawing reaches the caller's buffer here (and when the current context changes), as with
 // Mesa's llvmpipe, which renders at a flush; these two also refresh the depth values handed
 // out by OSMesaGetDepthBuffer.
-void GLAPIENTRY glFinish(void) { finish_drawing(); }
-void GLAPIENTRY glFlush(void) { finish_drawing(); }
+void exec::Finish(GlContext& c) { finish_drawing(c); }
+void exec::Flush(GlContext& c) { finish_drawing(c); }
 
-}  // extern "C"
+}  // namespace shadelab::gl

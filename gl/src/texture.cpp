@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
 #include "gl/src/pixels.hpp"
@@ -111,35 +112,33 @@ GLenum wrap_enum(TextureWrap w) {
 }
 
 // glTexParameter with its values as floats (n of them: 4 for the border colour).
-void tex_parameter(GLenum target, GLenum pname, const float* v, int n) {
-  outside_begin_end([&](GlContext& c) {
-    if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
-    if (!v) return c.set_error(GL_INVALID_VALUE);
-    TextureObject& t = *c.textures.bound;
-    GLenum e = v[0] >= 0.0f && v[0] < 4e9f ? GLenum(v[0]) : 0;
-    switch (pname) {
-      case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T: {
-        if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE) return c.set_error(GL_INVALID_ENUM);
-        TextureWrap w = e == GL_REPEAT ? TextureWrap::kRepeat : e == GL_CLAMP ? TextureWrap::kClamp : TextureWrap::kClampToEdge;
-        (pname == GL_TEXTURE_WRAP_S ? t.texture.wrap_s : t.texture.wrap_t) = w;
-        return;
-      }
-      case GL_TEXTURE_MIN_FILTER:
-        if (!is_min_filter(e)) return c.set_error(GL_INVALID_ENUM);
-        t.texture.min_filter = filter_of(e);
-        return;
-      case GL_TEXTURE_MAG_FILTER:
-        if (e != GL_NEAREST && e != GL_LINEAR) return c.set_error(GL_INVALID_ENUM);
-        t.texture.mag_filter = filter_of(e);
-        return;
-      case GL_TEXTURE_BORDER_COLOR:
-        if (n < 4) return c.set_error(GL_INVALID_ENUM);
-        for (int i = 0; i < 4; ++i) t.border_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
-        return;
-      case GL_TEXTURE_PRIORITY: t.priority = std::clamp(finite_or_zero(v[0]), 0.0f, 1.0f); return;
-      default: return c.set_error(GL_INVALID_ENUM);
+void tex_parameter(GlContext& c, GLenum target, GLenum pname, const float* v, int n) {
+  if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  TextureObject& t = *c.textures.bound;
+  GLenum e = v[0] >= 0.0f && v[0] < 4e9f ? GLenum(v[0]) : 0;
+  switch (pname) {
+    case GL_TEXTURE_WRAP_S: case GL_TEXTURE_WRAP_T: {
+      if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE) return c.set_error(GL_INVALID_ENUM);
+      TextureWrap w = e == GL_REPEAT ? TextureWrap::kRepeat : e == GL_CLAMP ? TextureWrap::kClamp : TextureWrap::kClampToEdge;
+      (pname == GL_TEXTURE_WRAP_S ? t.texture.wrap_s : t.texture.wrap_t) = w;
+      return;
     }
-  });
+    case GL_TEXTURE_MIN_FILTER:
+      if (!is_min_filter(e)) return c.set_error(GL_INVALID_ENUM);
+      t.texture.min_filter = filter_of(e);
+      return;
+    case GL_TEXTURE_MAG_FILTER:
+      if (e != GL_NEAREST && e != GL_LINEAR) return c.set_error(GL_INVALID_ENUM);
+      t.texture.mag_filter = filter_of(e);
+      return;
+    case GL_TEXTURE_BORDER_COLOR:
+      if (n < 4) return c.set_error(GL_INVALID_ENUM);
+      for (int i = 0; i < 4; ++i) t.border_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
+      return;
+    case GL_TEXTURE_PRIORITY: t.priority = std::clamp(finite_or_zero(v[0]), 0.0f, 1.0f); return;
+    default: return c.set_error(GL_INVALID_ENUM);
+  }
 }
 
 // glGetTexParameter: count of values written into v (0: unknown pname).
@@ -158,50 +157,44 @@ int get_tex_parameter(const TextureObject& t, GLenum pname, float* v, bool& colo
 }
 
 // glTexEnv (GL 1.1 section 3.8.9).
-void tex_env(GLenum target, GLenum pname, const float* v, int n) {
-  outside_begin_end([&](GlContext& c) {
-    if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
-    if (!v) return c.set_error(GL_INVALID_VALUE);
-    if (pname == GL_TEXTURE_ENV_MODE) {
-      GLenum m = v[0] >= 0.0f && v[0] < 4e9f ? GLenum(v[0]) : 0;
-      if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE) return c.set_error(GL_INVALID_ENUM);
-      c.textures.env_mode = m;
-    } else if (pname == GL_TEXTURE_ENV_COLOR && n == 4) {
-      for (int i = 0; i < 4; ++i) c.textures.env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
-    } else {
-      c.set_error(GL_INVALID_ENUM);
-    }
-  });
+void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v, int n) {
+  if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  if (pname == GL_TEXTURE_ENV_MODE) {
+    GLenum m = v[0] >= 0.0f && v[0] < 4e9f ? GLenum(v[0]) : 0;
+    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE) return c.set_error(GL_INVALID_ENUM);
+    c.textures.env_mode = m;
+  } else if (pname == GL_TEXTURE_ENV_COLOR && n == 4) {
+    for (int i = 0; i < 4; ++i) c.textures.env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
+  } else {
+    c.set_error(GL_INVALID_ENUM);
+  }
 }
 
 template <class T>
-void get_tex_env(GLenum target, GLenum pname, T* params) {
-  outside_begin_end([&](GlContext& c) {
-    if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
-    float v[4] = {float(c.textures.env_mode), 0, 0, 0};
-    int n = 1;
-    if (pname == GL_TEXTURE_ENV_COLOR) {
-      for (int i = 0; i < 4; ++i) v[i] = c.textures.env_color[i];
-      n = 4;
-    } else if (pname != GL_TEXTURE_ENV_MODE) {
-      return c.set_error(GL_INVALID_ENUM);
-    }
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_gl_values(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
-  });
+void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
+  if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
+  float v[4] = {float(c.textures.env_mode), 0, 0, 0};
+  int n = 1;
+  if (pname == GL_TEXTURE_ENV_COLOR) {
+    for (int i = 0; i < 4; ++i) v[i] = c.textures.env_color[i];
+    n = 4;
+  } else if (pname != GL_TEXTURE_ENV_MODE) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  write_gl_values(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
 }
 
 template <class T>
-void get_tex_parameter_call(GLenum target, GLenum pname, T* params) {
-  outside_begin_end([&](GlContext& c) {
-    if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
-    float v[4];
-    bool color = false;
-    int n = get_tex_parameter(*c.textures.bound, pname, v, color);
-    if (n == 0) return c.set_error(GL_INVALID_ENUM);
-    if (!params) return c.set_error(GL_INVALID_VALUE);
-    write_gl_values(v, n, color, params);
-  });
+void get_tex_parameter_call(GlContext& c, GLenum target, GLenum pname, T* params) {
+  if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  float v[4];
+  bool color = false;
+  int n = get_tex_parameter(*c.textures.bound, pname, v, color);
+  if (n == 0) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  write_gl_values(v, n, color, params);
 }
 
 template <class T>
@@ -216,126 +209,114 @@ void to_floats(const T* in, int n, bool color, float* out) {
 }
 
 }  // namespace
-}  // namespace shadelab::gl
 
-using namespace shadelab::gl;
-
-extern "C" {
-
-void GLAPIENTRY glGenTextures(GLsizei n, GLuint* textures) {
-  outside_begin_end([&](GlContext& c) {
-    if (n < 0) return c.set_error(GL_INVALID_VALUE);
-    if (n > 0 && !textures) return c.set_error(GL_INVALID_VALUE);
-    TextureNames& names = *c.textures.names;
-    for (GLsizei i = 0; i < n; ++i) {
-      while (names.next_name == 0 || names.objects.count(names.next_name)) ++names.next_name;
-      GLuint name = names.next_name++;
-      names.objects[name] = nullptr;  // reserved; the object appears at its first bind
-      textures[i] = name;
-    }
-  });
+void exec::GenTextures(GlContext& c, GLsizei n, GLuint* textures) {
+  if (n < 0) return c.set_error(GL_INVALID_VALUE);
+  if (n > 0 && !textures) return c.set_error(GL_INVALID_VALUE);
+  TextureNames& names = *c.textures.names;
+  for (GLsizei i = 0; i < n; ++i) {
+    while (names.next_name == 0 || names.objects.count(names.next_name)) ++names.next_name;
+    GLuint name = names.next_name++;
+    names.objects[name] = nullptr;  // reserved; the object appears at its first bind
+    textures[i] = name;
+  }
 }
 
 // Deleting a bound texture binds 0 in this context (GL 1.1 section 3.8.8).
-void GLAPIENTRY glDeleteTextures(GLsizei n, const GLuint* textures) {
-  outside_begin_end([&](GlContext& c) {
-    if (n < 0) return c.set_error(GL_INVALID_VALUE);
-    if (n > 0 && !textures) return c.set_error(GL_INVALID_VALUE);
-    for (GLsizei i = 0; i < n; ++i) {
-      if (textures[i] == 0) continue;
-      c.textures.names->objects.erase(textures[i]);
-      if (c.textures.bound_name == textures[i]) {
-        c.textures.bound_name = 0;
-        c.textures.bound = c.textures.default_texture;
-      }
+void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
+  if (n < 0) return c.set_error(GL_INVALID_VALUE);
+  if (n > 0 && !textures) return c.set_error(GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < n; ++i) {
+    if (textures[i] == 0) continue;
+    c.textures.names->objects.erase(textures[i]);
+    if (c.textures.bound_name == textures[i]) {
+      c.textures.bound_name = 0;
+      c.textures.bound = c.textures.default_texture;
     }
-  });
+  }
 }
 
-void GLAPIENTRY glBindTexture(GLenum target, GLuint texture) {
-  outside_begin_end([&](GlContext& c) {
-    if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
-    TextureState& t = c.textures;
-    if (texture == 0) {
-      t.bound = t.default_texture;
-    } else {
-      std::shared_ptr<TextureObject>& obj = t.names->objects[texture];
-      if (!obj) obj = std::make_shared<TextureObject>();
-      t.bound = obj;
-    }
-    t.bound_name = texture;
-  });
+void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
+  if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  TextureState& t = c.textures;
+  if (texture == 0) {
+    t.bound = t.default_texture;
+  } else {
+    std::shared_ptr<TextureObject>& obj = t.names->objects[texture];
+    if (!obj) obj = std::make_shared<TextureObject>();
+    t.bound = obj;
+  }
+  t.bound_name = texture;
 }
 
-GLboolean GLAPIENTRY glIsTexture(GLuint texture) {
-  GLboolean result = GL_FALSE;
-  outside_begin_end([&](GlContext& c) {
-    auto it = c.textures.names->objects.find(texture);
-    result = it != c.textures.names->objects.end() && it->second ? GL_TRUE : GL_FALSE;
-  });
-  return result;
+GLboolean exec::IsTexture(GlContext& c, GLuint texture) {
+  auto it = c.textures.names->objects.find(texture);
+  return it != c.textures.names->objects.end() && it->second ? GL_TRUE : GL_FALSE;
 }
 
 // Any size up to GL_MAX_TEXTURE_SIZE is accepted (non-power-of-two too, as Mesa does);
 // border texels are skipped.
-void GLAPIENTRY glTexImage2D(GLenum target, GLint level, GLint internal_format, GLsizei width,
-                             GLsizei height, GLint border, GLenum format, GLenum type,
-                             const GLvoid* pixels) {
-  outside_begin_end([&](GlContext& c) {
-    if (target == GL_PROXY_TEXTURE_2D) return;  // proxies: nothing stored
-    if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
-    shadelab::TextureFormat base;
-    if (color_format_components(format) == 0 || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
-    if (!base_format(internal_format, base)) return c.set_error(GL_INVALID_VALUE);
-    if (level < 0 || level > max_level() || (border != 0 && border != 1)) return c.set_error(GL_INVALID_VALUE);
-    if (width < 2 * border || height < 2 * border || width - 2 * border > kMaxTextureSize ||
-        height - 2 * border > kMaxTextureSize) {
-      return c.set_error(GL_INVALID_VALUE);
-    }
-    shadelab::TextureLevel image = unpack_level(c, width, height, border, format, type, pixels, base);
-    TextureObject& t = *c.textures.bound;
-    if (t.texture.levels.size() <= std::size_t(level)) {
-      t.texture.levels.resize(std::size_t(level) + 1);
-      t.internal_formats.resize(std::size_t(level) + 1, 0);
-    }
-    t.texture.levels[std::size_t(level)] = std::move(image);
-    t.internal_formats[std::size_t(level)] = internal_format;
-    if (level == 0) t.texture.format = base;
-  });
+void exec::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internal_format, GLsizei width,
+                      GLsizei height, GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (target == GL_PROXY_TEXTURE_2D) return;  // proxies: nothing stored
+  if (target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  shadelab::TextureFormat base;
+  if (color_format_components(format) == 0 || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
+  if (!base_format(internal_format, base)) return c.set_error(GL_INVALID_VALUE);
+  if (level < 0 || level > max_level() || (border != 0 && border != 1)) return c.set_error(GL_INVALID_VALUE);
+  if (width < 2 * border || height < 2 * border || width - 2 * border > kMaxTextureSize ||
+      height - 2 * border > kMaxTextureSize) {
+    return c.set_error(GL_INVALID_VALUE);
+  }
+  shadelab::TextureLevel image = unpack_level(c, width, height, border, format, type, pixels, base);
+  TextureObject& t = *c.textures.bound;
+  if (t.texture.levels.size() <= std::size_t(level)) {
+    t.texture.levels.resize(std::size_t(level) + 1);
+    t.internal_formats.resize(std::size_t(level) + 1, 0);
+  }
+  t.texture.levels[std::size_t(level)] = std::move(image);
+  t.internal_formats[std::size_t(level)] = internal_format;
+  if (level == 0) t.texture.format = base;
 }
 
-void GLAPIENTRY glTexParameterf(GLenum target, GLenum pname, GLfloat param) { tex_parameter(target, pname, &param, 1); }
-void GLAPIENTRY glTexParameteri(GLenum target, GLenum pname, GLint param) {
+void exec::TexParameterf(GlContext& c, GLenum target, GLenum pname, GLfloat param) {
+  tex_parameter(c, target, pname, &param, 1);
+}
+void exec::TexParameteri(GlContext& c, GLenum target, GLenum pname, GLint param) {
   float v = float(param);
-  tex_parameter(target, pname, &v, 1);
+  tex_parameter(c, target, pname, &v, 1);
 }
-void GLAPIENTRY glTexParameterfv(GLenum target, GLenum pname, const GLfloat* params) {
-  tex_parameter(target, pname, params, pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1);
+void exec::TexParameterfv(GlContext& c, GLenum target, GLenum pname, const GLfloat* params) {
+  tex_parameter(c, target, pname, params, pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1);
 }
-void GLAPIENTRY glTexParameteriv(GLenum target, GLenum pname, const GLint* params) {
+void exec::TexParameteriv(GlContext& c, GLenum target, GLenum pname, const GLint* params) {
   float v[4] = {0, 0, 0, 0};
   int n = pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1;
   if (params) to_floats(params, n, pname == GL_TEXTURE_BORDER_COLOR, v);
-  tex_parameter(target, pname, params ? v : nullptr, n);
+  tex_parameter(c, target, pname, params ? v : nullptr, n);
 }
-void GLAPIENTRY glGetTexParameterfv(GLenum target, GLenum pname, GLfloat* params) { get_tex_parameter_call(target, pname, params); }
-void GLAPIENTRY glGetTexParameteriv(GLenum target, GLenum pname, GLint* params) { get_tex_parameter_call(target, pname, params); }
+void exec::GetTexParameterfv(GlContext& c, GLenum target, GLenum pname, GLfloat* params) {
+  get_tex_parameter_call(c, target, pname, params);
+}
+void exec::GetTexParameteriv(GlContext& c, GLenum target, GLenum pname, GLint* params) {
+  get_tex_parameter_call(c, target, pname, params);
+}
 
-void GLAPIENTRY glTexEnvf(GLenum target, GLenum pname, GLfloat param) { tex_env(target, pname, &param, 1); }
-void GLAPIENTRY glTexEnvi(GLenum target, GLenum pname, GLint param) {
+void exec::TexEnvf(GlContext& c, GLenum target, GLenum pname, GLfloat param) { tex_env(c, target, pname, &param, 1); }
+void exec::TexEnvi(GlContext& c, GLenum target, GLenum pname, GLint param) {
   float v = float(param);
-  tex_env(target, pname, &v, 1);
+  tex_env(c, target, pname, &v, 1);
 }
-void GLAPIENTRY glTexEnvfv(GLenum target, GLenum pname, const GLfloat* params) {
-  tex_env(target, pname, params, pname == GL_TEXTURE_ENV_COLOR ? 4 : 1);
+void exec::TexEnvfv(GlContext& c, GLenum target, GLenum pname, const GLfloat* params) {
+  tex_env(c, target, pname, params, pname == GL_TEXTURE_ENV_COLOR ? 4 : 1);
 }
-void GLAPIENTRY glTexEnviv(GLenum target, GLenum pname, const GLint* params) {
+void exec::TexEnviv(GlContext& c, GLenum target, GLenum pname, const GLint* params) {
   float v[4] = {0, 0, 0, 0};
   int n = pname == GL_TEXTURE_ENV_COLOR ? 4 : 1;
   if (params) to_floats(params, n, pname == GL_TEXTURE_ENV_COLOR, v);
-  tex_env(target, pname, params ? v : nullptr, n);
+  tex_env(c, target, pname, params ? v : nullptr, n);
 }
-void GLAPIENTRY glGetTexEnvfv(GLenum target, GLenum pname, GLfloat* params) { get_tex_env(target, pname, params); }
-void GLAPIENTRY glGetTexEnviv(GLenum target, GLenum pname, GLint* params) { get_tex_env(target, pname, params); }
+void exec::GetTexEnvfv(GlContext& c, GLenum target, GLenum pname, GLfloat* params) { get_tex_env(c, target, pname, params); }
+void exec::GetTexEnviv(GlContext& c, GLenum target, GLenum pname, GLint* params) { get_tex_env(c, target, pname, params); }
 
-}  // extern "C"
+}  // namespace shadelab::gl
