@@ -160,7 +160,50 @@ struct FragmentCapture {
 /// each fragment's own blend state, then empties the capture.
 void resolve_fragments(Framebuffer& fb, FragmentCapture& capture);
 
-/// Per-fragment state for one draw.
+/// glScissor (GL 1.1 section 4.1.2): with `enabled`, fragments outside the window-space box
+/// [x, x + width) x [y, y + height) are discarded, and draw_triangles visits no tile outside it.
+struct ScissorState {
+  bool enabled = false;
+  int x = 0, y = 0;
+  int width = 0, height = 0;  ///< >= 0
+};
+
+/// glAlphaFunc (GL 1.1 section 4.1.3): with `enabled`, a fragment is kept when
+/// `func(alpha, ref)` holds. Both are compared in the colour buffer's precision, as llvmpipe
+/// does: clamped to [0, 1] and rounded to 8 bits first.
+struct AlphaTestState {
+  bool enabled = false;
+  CompareFunc func = CompareFunc::kAlways;
+  float ref = 0.0f;  ///< clamped to [0, 1]
+};
+
+/// glLogicOp's sixteen operations (GL 1.1 section 4.1.7, table 4.2), in the order of their GL
+/// enums (GL_CLEAR = 0x1500 ... GL_SET = 0x150F): s is the fragment's colour, d the pixel's,
+/// both as 8-bit values.
+enum class LogicOp : std::uint8_t {
+  kClear, kAnd, kAndReverse, kCopy, kAndInverted, kNoop, kXor, kOr,
+  kNor, kEquiv, kInvert, kOrReverse, kCopyInverted, kOrInverted, kNand, kSet,
+};
+
+/// GL_COLOR_LOGIC_OP: with `enabled`, the colour written is `op(s, d)` bit by bit on the 8-bit
+/// values instead of the blended colour (blending is not done), then the colour mask applies.
+struct LogicOpState {
+  bool enabled = false;
+  LogicOp op = LogicOp::kCopy;
+};
+
+/// glPolygonStipple (GL 1.1 section 3.5.2): with `enabled`, a triangle's fragment at window
+/// pixel (x, y) is produced only when bit (x mod 32) of rows[y mod 32] is set (bit 0 is the
+/// leftmost pixel of the 32; row 0 the bottom row). Applies to polygons only.
+struct PolygonStipple {
+  bool enabled = false;
+  std::array<std::uint32_t, 32> rows{};
+};
+
+/// Per-fragment state for one draw. The operations run in GL's order (GL 1.1 chapter 4):
+/// pixel ownership (the framebuffer), polygon stipple (rasterization), scissor, alpha test,
+/// stencil test, depth test, blending or logic op, colour mask. Dithering is never done (as
+/// llvmpipe's). Fog belongs to the colour (ShadeState::fog) and comes before all of them.
 struct FragmentState {
   CullMode cull = CullMode::kNone;
   bool front_ccw = true;  ///< glFrontFace(GL_CCW): counter-clockwise in window space is front
@@ -172,6 +215,10 @@ struct FragmentState {
   StencilState stencil;
   bool polygon_offset = false;  ///< glPolygonOffset for filled polygons
   float offset_factor = 0.0f, offset_units = 0.0f;
+  ScissorState scissor;
+  AlphaTestState alpha_test;
+  LogicOpState logic_op;
+  PolygonStipple stipple;
   /// When set, fragments passing the depth test are captured (with `blend`) instead of being
   /// written; depth is not written. For exact transparency.
   FragmentCapture* capture = nullptr;
@@ -196,6 +243,21 @@ struct ShadowMap {
   float visibility(const glm::vec3& p, const glm::vec3& n) const;
 };
 
+enum class FogMode { kLinear, kExp, kExp2 };
+
+/// Fog (GL 1.1 section 3.9), as Mesa's fixed-function programs compute it: every vertex has
+/// a fog coordinate (VertexInput::fog_coords, or by default the distance |z| of its eye-space
+/// position from the eye plane, Mesa's GL_EYE_PLANE_ABSOLUTE_NV), interpolated per fragment
+/// like any other attribute; each fragment computes its factor f from it (GL_LINEAR:
+/// (end - c) / (end - start); GL_EXP: e^(-density c); GL_EXP2: e^(-(density c)^2)), clamps
+/// it to [0, 1] and takes f C + (1 - f) C_fog as its red, green and blue; alpha is kept.
+struct FogState {
+  bool enabled = false;
+  FogMode mode = FogMode::kExp;
+  glm::vec3 color{0.0f};  ///< in [0, 1]
+  float start = 0.0f, end = 1.0f, density = 1.0f;
+};
+
 /// How colours are made. With `lighting` the pipeline lights vertices or pixels (by `shading`)
 /// with the one lighting function; without it, vertex colours are used as given.
 struct ShadeState {
@@ -211,6 +273,8 @@ struct ShadeState {
   TextureEnvMode texture_env = TextureEnvMode::kModulate;
   /// Shadow maps by light index (empty, or as long as `lights`; size 0 = unshadowed light).
   std::span<const ShadowMap> shadow_maps;
+  /// Fog, applied after texturing and the colour sum.
+  FogState fog;
 };
 
 /// Vertices in eye space and the triangles over them.
@@ -226,6 +290,8 @@ struct VertexInput {
   std::span<const glm::vec3> secondary_colors;
   std::span<const glm::vec3> back_secondary_colors;
   std::span<const glm::vec2> texcoords;  ///< (s, t) per vertex, for texturing
+  /// Fog coordinate per vertex (eye-space distance); empty: |z| of `positions`.
+  std::span<const float> fog_coords;
   glm::vec4 constant_color{1.0f};
   std::span<const Triangle> triangles;  ///< last index of each is the provoking vertex
 };
@@ -237,8 +303,8 @@ struct RenderStats {
   std::uint64_t triangles_clipped = 0;  ///< crossing a clip plane (then split)
   std::uint64_t triangles_rasterized = 0;
   std::uint64_t vertices_lit = 0;
-  std::uint64_t fragments = 0;        ///< covered samples that reached the depth test
-  std::uint64_t pixels_shaded = 0;    ///< fragments that passed depth and were written
+  std::uint64_t fragments = 0;        ///< covered samples that passed stipple and scissor
+  std::uint64_t pixels_shaded = 0;    ///< fragments that passed every test and were written
   double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
   bool interrupted = false;  ///< render_scene stopped at RenderOptions::deadline
   /// Exact transparency: fragments not blended because RenderOptions::max_fragment_memory was
@@ -342,6 +408,36 @@ class PipelineContext {
 void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
                     const FragmentState& fragment, const ShadeState& shade,
                     const VertexInput& vertices, RenderStats* stats = nullptr,
+                    PipelineContext* fast = nullptr);
+
+/// A rectangle of window-space fragments that no primitive made: what glDrawPixels,
+/// glCopyPixels and glBitmap produce (GL 1.1 sections 3.6.4, 3.6.5, 3.7). Fragment (i, j) of
+/// the rectangle is at window pixel (x + i, y + j); arrays are indexed by j * width + i
+/// (row 0 the bottom row).
+struct FragmentRect {
+  int x = 0, y = 0;
+  int width = 0, height = 0;  ///< >= 0
+  /// The fragments' colours, unclamped: width * height of them, or one for every fragment
+  /// (glBitmap's raster colour).
+  std::span<const glm::vec4> colors;
+  float depth = 0.0f;                ///< window depth of every fragment (the raster position's)
+  std::span<const float> depths;     ///< or one per fragment (glDrawPixels of depth values)
+  std::span<const std::uint8_t> mask;  ///< empty, or width * height: 0 makes no fragment (glBitmap)
+  glm::vec2 texcoord{0.0f};  ///< (s, t) of every fragment (the raster position's), for texturing
+  float fog_coord = 0.0f;    ///< the raster position's fog coordinate
+};
+
+/// Runs GL's per-fragment operations on the fragments of `rect`, as on a primitive's: their
+/// colours textured with `shade`'s texture at `texcoord` (its magnification filter: the
+/// coordinates do not change across the rectangle) and fogged with `shade.fog` at `fog_coord`
+/// (lighting and shading are not used), then `fragment`'s scissor, alpha test, stencil and
+/// depth tests, blending or logic op and colour mask. Fragments outside the framebuffer are
+/// dropped (pixel ownership); polygon stipple, culling and polygon offset do not apply.
+/// With `fast`, its waiting draws and pending clears are applied first and the fragments are
+/// written at once, rows split over its threads (a simple loop over the reference's
+/// operations: not a hot path); the caller marks what it knows of the rectangle's tiles.
+void draw_fragments(Framebuffer& fb, const FragmentState& fragment, const ShadeState& shade,
+                    const FragmentRect& rect, RenderStats* stats = nullptr,
                     PipelineContext* fast = nullptr);
 
 }  // namespace shadelab

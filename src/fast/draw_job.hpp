@@ -12,6 +12,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "fast/lighting_setup.hpp"
+#include "pipeline/fragment_ops.hpp"
 #include "pipeline/stages.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/pipeline.hpp"
@@ -61,12 +62,14 @@ struct VaryingLayout {
   int front_secondary = -1, back_secondary = -1;  // 3 floats
   int eye_position = -1, eye_normal = -1;         // 3 floats
   int texcoord = -1;                              // 2 floats
+  int fog = -1;                                   // 1 float: the fog coordinate
   int count = 0;                                  // floats per vertex
 };
 
 /// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster.cpp):
 /// the general one, which reads the fragment state at every block, or one compiled for the
-/// usual state, with nothing left to decide per block: the depth test kLess or kLequal writing
+/// usual state, with nothing left to decide per block (no fog, scissor, stipple, alpha test
+/// or logic op): the depth test kLess or kLequal writing
 /// depth, every colour channel written, flat or Gouraud colours, and the colour either
 /// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
 /// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
@@ -83,6 +86,18 @@ struct DrawPlan {
   bool scalar_fragments = false; ///< per-fragment reference operations (stencil, capture,
                                  ///< textures, Phong the SIMD kernel does not cover)
   bool writes_color = true;      ///< some colour channel is written (or captured)
+  bool fog = false;              ///< fogged colours (ShadeState::fog)
+  detail::FogParams fog_params;
+  bool alpha_test = false;       ///< colour before depth: the alpha test decides first
+  /// Interpolated colours computed as the reference does (raster.cpp's block_color): the
+  /// alpha test's alpha, or every channel for the logic op.
+  bool exact_colors = false;
+  float alpha_ref = 0.0f;        ///< the reference as an 8-bit value (detail::alpha_test)
+  /// Lanes of each block masked by the scissor box and the polygon stipple (raster.cpp).
+  bool lane_masks = false;
+  /// The pixels a draw may write: the framebuffer, cut by the scissor box (inclusive bounds;
+  /// empty when x1 < x0). Setup bins no tile outside it.
+  int box_x0 = 0, box_y0 = 0, box_x1 = -1, box_y1 = -1;
   BlockKernel kernel = BlockKernel::kGeneral;
   LightingSetup lighting;
 };

@@ -1,6 +1,6 @@
 // SIMD fragment work for one block of pixels of one triangle: depth test,
-// perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting,
-// blending and the colour write. A block is two rows of as many pixels as the SIMD target has
+// perspective-correct interpolation, Gouraud/flat colours or per-pixel Phong lighting, fog,
+// the alpha test, blending or the logic op, and the colour write. A block is two rows of as many pixels as the SIMD target has
 // double lanes (8 x 2 with AVX-512): coverage and the barycentric weights are computed row by
 // row in double lanes, exactly as the reference; the rest on one float vector holding both
 // rows. Depth (the reference's float plane), blending and the round-half-away conversion are
@@ -25,6 +25,7 @@
 
 #include "fast/lighting-inl.h"
 #include "fast/triangle.hpp"
+#include "hwy/contrib/math/math-inl.h"
 #include "hwy/highway.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -244,6 +245,7 @@ struct TrianglePlanes {
   bool uniform;
   float uniform_color[4];
   Plane position[3], normal[3];
+  Plane fog[1];  // the fog coordinate (never flat), when the draw is fogged
   // The opaque kernels' colour planes, in bytes: 255 c + kJustBelowHalf, whose truncation
   // (clamped to [0, 255]) is the byte (to_unorm8). Equal to the colour planes' bytes for one
   // colour over the triangle; otherwise within the same few float roundings.
@@ -256,9 +258,8 @@ HWY_INLINE VB varying(const TriSetup& t, const TrianglePlanes& planes, const Wei
   return planes.exact ? exact_varying(t, w, p.k) : linear_varying(w, p);
 }
 
-HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
+HWY_INLINE void set_up_color_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   const VaryingLayout& l = job.plan.layout;
-  out.ready = true;
   if (job.plan.phong) {
     const bool finite_position = set_up(t, l.eye_position, nullptr, out.position);
     const bool finite_normal = set_up(t, l.eye_normal, nullptr, out.normal);
@@ -282,6 +283,15 @@ HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePla
       out.bytes[c] = {p.base * 255.0f + kJustBelowHalf, p.d0 * 255.0f, p.d1 * 255.0f, p.k};
     }
   }
+}
+
+HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
+  out.ready = true;
+  set_up_color_planes(job, t, out);
+  if (!job.plan.fog) return;
+  // Fog blends the unclamped colour (draw.cpp's shade_fragment): no clamped uniform colour.
+  out.uniform = false;
+  if (!set_up(t, job.plan.layout.fog, nullptr, out.fog)) out.exact = true;
 }
 
 struct Rgba {
@@ -347,6 +357,33 @@ HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Triangl
   Rgba out;
   phong_lanes(job, t, db, V3<DB>{v[0], v[1], v[2]}, V3<DB>{v[3], v[4], v[5]}, out.c);
   return out;
+}
+
+/// fragment_ops.cpp's apply_fog on a block's colours: the fog factor from the interpolated
+/// fog coordinate (2^y as e^(y ln 2), within an ulp or two of the reference's exp2), clamped,
+/// then f (C - C_fog) + C_fog for red, green and blue.
+HWY_INLINE void apply_fog(const detail::FogParams& p, const TriSetup& t, const TrianglePlanes& planes,
+                          const Weights& w, Rgba& color) {
+  const DB db;
+  const VB c = varying(t, planes, w, planes.fog[0]);
+  VB f;
+  if (p.mode == FogMode::kLinear) {
+    f = hn::MulAdd(c, hn::Set(db, p.scale), hn::Set(db, p.bias));
+  } else {
+    VB y = hn::Mul(c, hn::Set(db, p.k));
+    if (p.mode == FogMode::kExp2) y = hn::Mul(y, y);
+    const VB x = hn::Neg(hn::Mul(y, hn::Set(db, 0.693147180559945309f)));
+    // Exp is valid up to 104: a positive exponent (a negative coordinate) gives a factor
+    // clamped to 1 anyway; NaN gives 0, as the reference's clamp.
+    f = hn::IfThenZeroElse(hn::IsNaN(x), hn::Exp(db, hn::Min(x, hn::Zero(db))));
+  }
+  f = clamp01(db, f);
+  #pragma GCC unroll 4
+  for (int k = 0; k < 3; ++k) {
+    const VB fog = hn::Set(db, p.color[k]);
+    color.c[k] = hn::MulAdd(f, hn::Sub(color.c[k], fog), fog);
+  }
+  color.clamped = false;
 }
 
 /// fragment_ops.cpp's compare(func, incoming, stored).
@@ -485,11 +522,56 @@ HWY_INLINE hn::Vec<DUB> byte_plane_colors(const TrianglePlanes& planes, const We
   return hn::Or(hn::Or(b[0], hn::ShiftLeft<8>(b[1])), hn::Or(hn::ShiftLeft<16>(b[2]), hn::ShiftLeft<24>(b[3])));
 }
 
+/// The lanes whose alpha passes the alpha test (fragment_ops.cpp's alpha_test): the alpha
+/// as its 8-bit value, in a float, against the reference's.
+HWY_INLINE unsigned alpha_bits(const AlphaTestState& a, float ref_byte, VB alpha) {
+  const DB db;
+  const VB byte = hn::Trunc(hn::Add(hn::Mul(clamp_unit(alpha), hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf)));
+  return block_bits(depth_compare(a.func, byte, hn::Set(db, ref_byte)));
+}
+
+/// fragment_ops.cpp's logic_op on RGBA8 words.
+HWY_INLINE hn::Vec<DUB> logic_op(LogicOp op, hn::Vec<DUB> s, hn::Vec<DUB> d) {
+  const DUB dub;
+  switch (op) {
+    case LogicOp::kClear: return hn::Zero(dub);
+    case LogicOp::kAnd: return hn::And(s, d);
+    case LogicOp::kAndReverse: return hn::AndNot(d, s);
+    case LogicOp::kCopy: return s;
+    case LogicOp::kAndInverted: return hn::AndNot(s, d);
+    case LogicOp::kNoop: return d;
+    case LogicOp::kXor: return hn::Xor(s, d);
+    case LogicOp::kOr: return hn::Or(s, d);
+    case LogicOp::kNor: return hn::Not(hn::Or(s, d));
+    case LogicOp::kEquiv: return hn::Not(hn::Xor(s, d));
+    case LogicOp::kInvert: return hn::Not(d);
+    case LogicOp::kOrReverse: return hn::Or(s, hn::Not(d));
+    case LogicOp::kCopyInverted: return hn::Not(s);
+    case LogicOp::kOrInverted: return hn::Or(hn::Not(s), d);
+    case LogicOp::kNand: return hn::Not(hn::And(s, d));
+    case LogicOp::kSet: return hn::Set(dub, ~0u);
+  }
+  return s;
+}
+
+/// The colour mask as a word: the bytes of the channels written.
+HWY_INLINE std::uint32_t mask_word(const FragmentState& fs) {
+  std::uint32_t m = 0;
+  for (int c = 0; c < 4; ++c) m |= fs.color_mask[c] ? 0xffu << (8 * c) : 0u;
+  return m;
+}
+
 /// fragment_ops.cpp's write_color for the lanes of a block set in `live`, at `rows`.
 HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
                              std::uint32_t* const rows[kRows]) {
   const DUB dub;
   Rgba out = clamped(color);
+  if (fs.logic_op.enabled) {  // instead of blending, on the 8-bit values
+    const hn::Vec<DUB> old = load_rows(DU(), rows);
+    const hn::Vec<DUB> keep = hn::Set(dub, mask_word(fs));
+    const hn::Vec<DUB> result = logic_op(fs.logic_op.op, pack_unorm8(out), old);
+    return store_rows(DU(), hn::Or(hn::And(result, keep), hn::AndNot(keep, old)), live, rows);
+  }
   bool masked = !(fs.color_mask[0] && fs.color_mask[1] && fs.color_mask[2] && fs.color_mask[3]);
   hn::Vec<DUB> old = (fs.blend.enabled || masked) ? load_rows(DU(), rows) : hn::Zero(dub);
   if (fs.blend.enabled) {

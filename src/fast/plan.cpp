@@ -1,5 +1,6 @@
 // The per-draw plan: which attribute slots vertices carry (only those the draw reads), where
-// lighting happens and which fragments take the per-fragment reference path.
+// lighting happens, which fragments take the per-fragment reference path, and which of the
+// per-fragment operations (fog, scissor, stipple, alpha test) the SIMD path must do.
 #include "fast/plan.hpp"
 
 #include <algorithm>
@@ -39,6 +40,9 @@ void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, 
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled) {
+    return BlockKernel::kGeneral;
+  }
   if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
       !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
     return BlockKernel::kGeneral;
@@ -48,6 +52,21 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
     return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
   }
   return BlockKernel::kGeneral;
+}
+
+// The framebuffer cut by the scissor box, and whether blocks need lane masks: a scissor box
+// that leaves some pixel of the framebuffer out, or the polygon stipple.
+void pixel_box(const Framebuffer& fb, const FragmentState& f, DrawPlan& p) {
+  p.box_x0 = 0, p.box_y0 = 0, p.box_x1 = fb.width - 1, p.box_y1 = fb.height - 1;
+  const ScissorState& s = f.scissor;
+  bool cut = false;
+  if (s.enabled) {
+    const long x1 = long(s.x) + s.width - 1, y1 = long(s.y) + s.height - 1;
+    cut = s.x > 0 || s.y > 0 || x1 < p.box_x1 || y1 < p.box_y1;
+    p.box_x0 = std::max(p.box_x0, s.x), p.box_y0 = std::max(p.box_y0, s.y);
+    p.box_x1 = int(std::min<long>(p.box_x1, x1)), p.box_y1 = int(std::min<long>(p.box_y1, y1));
+  }
+  p.lane_masks = cut || f.stipple.enabled;
 }
 
 }  // namespace
@@ -84,6 +103,12 @@ void make_plan(DrawJob& job) {
   p.writes_color = writes_color(frag);
   p.scalar_fragments = frag.stencil.enabled || frag.capture || shade.texture ||
                        (p.phong && (shadows || !simd_materials));
+  p.fog = shade.fog.enabled;
+  if (p.fog) p.fog_params = detail::fog_params(shade.fog);
+  p.alpha_test = frag.alpha_test.enabled;
+  p.alpha_ref = float(detail::unorm8(frag.alpha_test.ref));
+  p.exact_colors = p.alpha_test || frag.logic_op.enabled;
+  pixel_box(*job.fb, frag, p);
   p.kernel = kernel_for(p, frag);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);
@@ -92,6 +117,7 @@ void make_plan(DrawJob& job) {
     l.eye_normal = take(l, 3);
   }
   if (shade.texture) l.texcoord = take(l, 2);
+  if (p.fog) l.fog = take(l, 1);
   p.layout = l;
   if (shade.lighting) {
     make_lighting_setup(shade.model, shade.lights, shade.front, shade.back, p.lighting);
@@ -107,6 +133,7 @@ void expand_varyings(const VaryingLayout& l, const float* v, detail::Attribs& a)
   if (l.eye_position >= 0) copy_slot(v + l.eye_position, &a[detail::kEyePosition], 3);
   if (l.eye_normal >= 0) copy_slot(v + l.eye_normal, &a[detail::kEyeNormal], 3);
   if (l.texcoord >= 0) copy_slot(v + l.texcoord, &a[detail::kTexCoord], 2);
+  if (l.fog >= 0) a[detail::kFogCoord] = v[l.fog];
 }
 
 void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v) {
@@ -118,6 +145,7 @@ void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v
   if (l.eye_position >= 0) copy_slot(&a[detail::kEyePosition], v + l.eye_position, 3);
   if (l.eye_normal >= 0) copy_slot(&a[detail::kEyeNormal], v + l.eye_normal, 3);
   if (l.texcoord >= 0) copy_slot(&a[detail::kTexCoord], v + l.texcoord, 2);
+  if (l.fog >= 0) v[l.fog] = a[detail::kFogCoord];
 }
 
 }  // namespace shadelab::fast

@@ -92,7 +92,34 @@ struct GroupCounts {
 // or bottom edge; or fragment by fragment on the reference path.
 enum class Path { kInterior, kEdge, kScalar };
 
-// The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour.
+// The interpolated colour channels [first, 4) of a block as the reference computes them
+// (exact_varying), primary plus secondary.
+HWY_INLINE void exact_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w, int first,
+                            Rgba& color) {
+  for (int c = first; c < 4; ++c) color.c[c] = exact_varying(t, w, planes.color[c].k);
+  if (!planes.has_secondary) return;
+  for (int c = first; c < 3; ++c) color.c[c] = hn::Add(color.c[c], exact_varying(t, w, planes.secondary[c].k));
+}
+
+// The colours of a block's lanes: Gouraud, flat or Phong, then fogged. Where a difference in
+// the last bit would change more than that bit of the result (the 8-bit alpha the alpha test
+// compares, the bytes a logic op combines), the interpolated colours are the reference's own
+// (flat and uniform colours and the exact planes already are).
+HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, const VD b0[kRows],
+                            const VD b1[kRows], VB f0, VB f1) {
+  if (!planes.ready) set_up_planes(job, t, planes);
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
+  if (job.plan.exact_colors && !job.plan.phong && !t.flat && !planes.exact && !planes.uniform) {
+    exact_color(t, planes, w, job.frag->logic_op.enabled ? 0 : 3, color);
+  }
+  if (job.plan.fog) apply_fog(job.plan.fog_params, t, planes, w, color);
+  return color;
+}
+
+// The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour;
+// with the alpha test, the colour first, and depth only for the lanes it keeps (GL 1.1
+// section 4.1.3: the alpha test comes before the stencil and depth tests).
 template <Path kPath>
 HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
                            GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
@@ -102,20 +129,44 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   BlockPixels g;
   open_block(job, target, x, y, kPath == Path::kInterior, g);
   unsigned passed = bits;
-  if (fs.depth_test) {
-    MB live = hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
+  Rgba color;
+  if (job.plan.alpha_test) {
+    color = block_color(job, t, planes, b0, b1, f0, f1);
+    passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
+  }
+  if (fs.depth_test && passed) {
+    MB live = hn::And(block_mask(passed), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
     passed = block_bits(live);
     if (fs.depth_write && passed) store_rows(df, z, passed, g.depth);
   }
   counts.fragments += unsigned(std::popcount(bits));
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
-    if (!planes.ready) set_up_planes(job, t, planes);
-    Weights w = perspective_weights(t, b0, b1, f0, f1);
-    Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
+    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1);
     write_colors(fs, color, passed, g.color);
   }
   if constexpr (kPath == Path::kEdge) close_block(job, g);
+}
+
+// The lanes of the block at (x, y) that the scissor box and the polygon stipple keep
+// (fragment_ops.hpp's pixel_kept). Blocks start at multiples of their width, which divides
+// 32: a row's lanes are consecutive bits of one stipple row.
+HWY_INLINE unsigned kept_lanes(const DrawJob& job, int x, int y, int lanes) {
+  const DrawPlan& p = job.plan;
+  const unsigned all = (1u << lanes) - 1u;
+  unsigned columns = all;
+  if (x < p.box_x0) columns &= ~((1u << std::min(p.box_x0 - x, lanes)) - 1u);
+  if (x + lanes - 1 > p.box_x1) columns &= (1u << std::clamp(p.box_x1 - x + 1, 0, lanes)) - 1u;
+  const PolygonStipple& stipple = job.frag->stipple;
+  unsigned kept = 0;
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const int row = y + r;
+    unsigned m = row < p.box_y0 || row > p.box_y1 ? 0u : columns;
+    if (stipple.enabled) m &= (stipple.rows[std::size_t(row & 31)] >> (x & 31)) & all;
+    kept |= m << (r * lanes);
+  }
+  return kept;
 }
 
 // A block of a triangle wholly inside the framebuffer, by one of the kernels compiled for
@@ -184,6 +235,12 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     bits |= bits_of_mask(dd, cov) << (r * lanes);
   }
   if (!bits) return;
+  if constexpr (kKernel == BlockKernel::kGeneral) {  // the kernels never mask lanes
+    if (job.plan.lane_masks) {
+      bits &= kept_lanes(job, x, y, lanes);
+      if (!bits) return;
+    }
+  }
   // Lanes outside the framebuffer (the tile's pixels end there) are not drawn.
   if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {
     const int valid = job.fb->width - x;

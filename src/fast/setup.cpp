@@ -73,12 +73,12 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
                       (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
   if (area == 0) return;  // the rasterizer draws nothing
-  const int w = job.fb->width, h = job.fb->height;
+  const DrawPlan& p = job.plan;
   std::int64_t min_x = std::min({a.sx, b.sx, c.sx}), max_x = std::max({a.sx, b.sx, c.sx});
   std::int64_t min_y = std::min({a.sy, b.sy, c.sy}), max_y = std::max({a.sy, b.sy, c.sy});
-  // The pixels whose centres lie in the triangle's box.
-  int x0 = std::max(0, first_centre(min_x)), x1 = std::min(w - 1, last_centre(max_x));
-  int y0 = std::max(0, first_centre(min_y)), y1 = std::min(h - 1, last_centre(max_y));
+  // The pixels whose centres lie in the triangle's box, in the framebuffer and the scissor box.
+  int x0 = std::max(p.box_x0, first_centre(min_x)), x1 = std::min(p.box_x1, last_centre(max_x));
+  int y0 = std::max(p.box_y0, first_centre(min_y)), y1 = std::min(p.box_y1, last_centre(max_y));
   if (x0 > x1 || y0 > y1) return;
   int tx0 = x0 >> kTileShift, tx1 = x1 >> kTileShift, ty0 = y0 >> kTileShift, ty1 = y1 >> kTileShift;
   if (tx0 == tx1 && ty0 == ty1) {  // most triangles of a big mesh: one tile, no edge tests

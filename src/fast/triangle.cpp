@@ -40,16 +40,18 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
   provoking = tri[2];
 }
 
-// The pixels whose centres lie in the triangle's box, cut to the tile.
+// The pixels whose centres lie in the triangle's box, cut to the tile and to the draw's
+// pixel box (the framebuffer and the scissor box).
 bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t) {
   std::int64_t min_x = std::min({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t max_x = std::max({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t min_y = std::min({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
   std::int64_t max_y = std::max({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
-  t.x0 = std::max(tx, first_centre(min_x));
-  t.x1 = std::min({job.fb->width - 1, tx + kTileSize - 1, last_centre(max_x)});
-  t.y0 = std::max(ty, first_centre(min_y));
-  t.y1 = std::min({job.fb->height - 1, ty + kTileSize - 1, last_centre(max_y)});
+  const DrawPlan& p = job.plan;
+  t.x0 = std::max({tx, p.box_x0, first_centre(min_x)});
+  t.x1 = std::min({p.box_x1, tx + kTileSize - 1, last_centre(max_x)});
+  t.y0 = std::max({ty, p.box_y0, first_centre(min_y)});
+  t.y1 = std::min({p.box_y1, ty + kTileSize - 1, last_centre(max_y)});
   return t.x0 <= t.x1 && t.y0 <= t.y1;
 }
 
@@ -162,13 +164,20 @@ void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, i
   const FragmentState& frag = *job.frag;
   std::size_t px = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
   ++ws.stats.fragments;
+  // draw.cpp's order: with the alpha test, the colour first (GL 1.1 section 4.1.3).
+  glm::vec4 color;
+  if (job.plan.alpha_test) {
+    color = detail::shade_fragment(*job.shade, reference_fragment(job, t, ws, x, y, w0, w1, z), t.front);
+    if (!detail::alpha_test(frag.alpha_test, color.a)) return;
+  }
   if (!detail::depth_stencil_test(fb, px, z, frag)) return;
   if (!job.plan.writes_color) {
     ++ws.stats.pixels_shaded;
     return;
   }
-  detail::Fragment f = reference_fragment(job, t, ws, x, y, w0, w1, z);
-  glm::vec4 color = detail::shade_fragment(*job.shade, f, t.front);
+  if (!job.plan.alpha_test) {
+    color = detail::shade_fragment(*job.shade, reference_fragment(job, t, ws, x, y, w0, w1, z), t.front);
+  }
   if (frag.capture) return capture(*frag.capture, px, z, color, frag.blend, ws.stats);
   detail::write_color(fb, px, color, frag);
   ++ws.stats.pixels_shaded;

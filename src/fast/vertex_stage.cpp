@@ -198,7 +198,7 @@ void given_colors(DrawJob& job, std::size_t i) {
   }
 }
 
-// Eye position (dehomogenized), normal and texture coordinates for one vertex.
+// Eye position (dehomogenized), normal, texture and fog coordinates for one vertex.
 void other_varyings(DrawJob& job, std::size_t i) {
   const VertexInput& in = *job.in;
   const VaryingLayout& l = job.plan.layout;
@@ -216,6 +216,7 @@ void other_varyings(DrawJob& job, std::size_t i) {
     glm::vec2 t = in.texcoords.empty() ? glm::vec2(0.0f) : in.texcoords[i];
     std::memcpy(v + l.texcoord, &t, sizeof(float) * 2);
   }
+  if (l.fog >= 0) v[l.fog] = detail::fog_coordinate(in, i);
 }
 
 void colors(DrawJob& job, Batch& b, WorkerScratch& ws) {

@@ -1,5 +1,6 @@
-// draw_triangles: the vertex stage (transform, per-vertex lighting), clipping, facing and
-// culling, then the reference rasterizer with per-pixel shading and fragment operations.
+// draw_triangles: the vertex stage (transform, per-vertex lighting, fog coordinate),
+// clipping, facing and culling, then the reference rasterizer with per-pixel shading, fog
+// and the fragment operations in GL's order (GL 1.1 chapters 3.5-4.1).
 #include <chrono>
 #include <cmath>
 
@@ -85,6 +86,7 @@ std::vector<ClipVertex> vertex_stage(const glm::mat4& projection, const ShadeSta
       v.attr[kTexCoord] = in.texcoords[i].x;
       v.attr[kTexCoord + 1] = in.texcoords[i].y;
     }
+    v.attr[kFogCoord] = fog_coordinate(in, i);
   }
   return out;
 }
@@ -143,8 +145,12 @@ float texture_lambda(const Texture& t, const Fragment& f) {
 
 }  // namespace
 
+float detail::fog_coordinate(const VertexInput& in, std::size_t i) {
+  return in.fog_coords.empty() ? std::fabs(in.positions[i].z) : in.fog_coords[i];
+}
+
 // The colour of one fragment, lit per pixel for Phong, else interpolated or flat; then
-// textured, then the secondary colour added.
+// textured, then the secondary colour added, then fogged.
 glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, bool front) {
   const Attribs& a = f.attr;
   LitColor lit;
@@ -167,8 +173,11 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     glm::vec4 texel = sample_texture(t, {a[kTexCoord], a[kTexCoord + 1]}, texture_lambda(t, f));
     color = apply_texture_env(shade.texture_env, t.format, color, texel, t.env_color);
   }
-  // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing.
-  return glm::vec4(glm::vec3(color) + lit.secondary, color.a);
+  // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped
+  // (Mesa's fixed-function fragment program adds it without saturating).
+  color = glm::vec4(glm::vec3(color) + lit.secondary, color.a);
+  if (shade.fog.enabled) color = apply_fog(fog_params(shade.fog), a[kFogCoord], color);
+  return color;
 }
 
 namespace {
@@ -208,22 +217,32 @@ void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
     const WindowVertex &a = win[0], &b = win[i], &c = win[i + 1];
     float offset = ctx.fragment->polygon_offset ? polygon_offset(a, b, c, *ctx.fragment) : 0.0f;
     auto emit = [&](const Fragment& f) {
+      const FragmentState& fs = *ctx.fragment;
+      if (!pixel_kept(fs, f.x, f.y, true)) return;  // polygon stipple, scissor
       std::size_t px = std::size_t(f.y) * fb.width + f.x;
       ++ctx.stats->fragments;
       float z = f.z + offset;
       z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // clamped, NaN to 0 (as the fast path)
-      if (!depth_stencil_test(fb, px, z, *ctx.fragment)) return;
-      if (FragmentCapture* cap = ctx.fragment->capture) {
+      // The alpha test needs the colour before the depth and stencil tests (GL 1.1 4.1.3);
+      // without it, fragments failing those are not shaded (the same pixels either way).
+      glm::vec4 color;
+      if (fs.alpha_test.enabled) {
+        color = shade_fragment(*ctx.shade, f, front);
+        if (!alpha_test(fs.alpha_test, color.a)) return;
+      }
+      if (!depth_stencil_test(fb, px, z, fs)) return;
+      if (!fs.alpha_test.enabled) color = shade_fragment(*ctx.shade, f, front);
+      if (FragmentCapture* cap = fs.capture) {
         if (cap->count >= cap->limit) {
           ++cap->dropped;
           return;
         }
-        cap->pixels[px].push_back({z, shade_fragment(*ctx.shade, f, front), ctx.fragment->blend});
+        cap->pixels[px].push_back({z, color, fs.blend});
         ++cap->count;
         ++ctx.stats->pixels_shaded;
         return;
       }
-      write_color(fb, px, shade_fragment(*ctx.shade, f, front), *ctx.fragment);
+      write_color(fb, px, color, fs);
       ++ctx.stats->pixels_shaded;
     };
     rasterize_triangle(a, b, c, fb.width, fb.height, ctx.shade->texture != nullptr, emit);

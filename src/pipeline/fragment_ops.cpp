@@ -1,10 +1,74 @@
-// Stencil, depth, blending and colour mask for one fragment (GL 1.5 sections 4.1.5-4.1.8).
+// Fog (GL 1.1 section 3.9), alpha test, stencil, depth, blending, logic op and colour mask for
+// one fragment (GL 1.1 sections 4.1.3-4.1.7, GL 1.5's 4.1.8 for the colour sum's place).
 #include "pipeline/fragment_ops.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace shadelab::detail {
+
+FogParams fog_params(const FogState& fog) {
+  FogParams p;
+  p.mode = fog.mode;
+  p.color = fog.color;
+  p.scale = fog.end == fog.start ? 1.0f : -1.0f / (fog.end - fog.start);
+  p.bias = fog.end * -p.scale;
+  constexpr double kLog2e = 1.4426950408889634, kInvSqrtLn2 = 1.2011224087864498;
+  p.k = float(double(fog.density) * (fog.mode == FogMode::kExp2 ? kInvSqrtLn2 : kLog2e));
+  return p;
+}
+
+float fog_factor(const FogParams& p, float c) {
+  float f;
+  switch (p.mode) {
+    case FogMode::kLinear: f = c * p.scale + p.bias; break;
+    case FogMode::kExp: f = std::exp2(-(c * p.k)); break;
+    case FogMode::kExp2: {
+      const float t = c * p.k;
+      f = std::exp2(-(t * t));
+      break;
+    }
+    default: f = 1.0f;
+  }
+  return f > 0.0f ? (f < 1.0f ? f : 1.0f) : 0.0f;
+}
+
+glm::vec4 apply_fog(const FogParams& p, float c, glm::vec4 color) {
+  const float f = fog_factor(p, c);
+  for (int i = 0; i < 3; ++i) color[i] = f * (color[i] - p.color[i]) + p.color[i];
+  return color;
+}
+
+std::uint8_t unorm8(float c) {
+  c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+  return static_cast<std::uint8_t>(std::lround(c * 255.0f));
+}
+
+bool alpha_test(const AlphaTestState& a, float alpha) {
+  return compare(a.func, float(unorm8(alpha)), float(unorm8(a.ref)));
+}
+
+std::uint32_t logic_op(LogicOp op, std::uint32_t s, std::uint32_t d) {
+  switch (op) {
+    case LogicOp::kClear: return 0;
+    case LogicOp::kAnd: return s & d;
+    case LogicOp::kAndReverse: return s & ~d;
+    case LogicOp::kCopy: return s;
+    case LogicOp::kAndInverted: return ~s & d;
+    case LogicOp::kNoop: return d;
+    case LogicOp::kXor: return s ^ d;
+    case LogicOp::kOr: return s | d;
+    case LogicOp::kNor: return ~(s | d);
+    case LogicOp::kEquiv: return ~(s ^ d);
+    case LogicOp::kInvert: return ~d;
+    case LogicOp::kOrReverse: return s | ~d;
+    case LogicOp::kCopyInverted: return ~s;
+    case LogicOp::kOrInverted: return ~s | d;
+    case LogicOp::kNand: return ~(s & d);
+    case LogicOp::kSet: return ~0u;
+  }
+  return s;
+}
 
 bool compare(CompareFunc func, float incoming, float stored) {
   switch (func) {
@@ -88,6 +152,18 @@ float unit(float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; }
 void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentState& state) {
   for (int c = 0; c < 4; ++c) src[c] = unit(src[c]);
   std::uint8_t* px = &fb.color[i * 4];
+  if (state.logic_op.enabled) {  // on the 8-bit values, instead of blending (GL 1.1 4.1.7)
+    std::uint32_t s = 0, d = 0;
+    for (int c = 0; c < 4; ++c) {
+      s |= std::uint32_t(unorm8(src[c])) << (8 * c);
+      d |= std::uint32_t(px[c]) << (8 * c);
+    }
+    const std::uint32_t out = logic_op(state.logic_op.op, s, d);
+    for (int c = 0; c < 4; ++c) {
+      if (state.color_mask[c]) px[c] = std::uint8_t(out >> (8 * c));
+    }
+    return;
+  }
   glm::vec4 out = src;
   if (state.blend.enabled) {
     glm::vec4 dst(px[0] / 255.0f, px[1] / 255.0f, px[2] / 255.0f, px[3] / 255.0f);

@@ -20,7 +20,8 @@ enum Attr : int {
   kEyePosition = 14,    // 3: for per-pixel (Phong) lighting
   kEyeNormal = 17,      // 3
   kTexCoord = 20,       // 2
-  kAttrCount = 22,
+  kFogCoord = 22,       // 1: fog coordinate (eye-space distance), never flat
+  kAttrCount = 23,
 };
 using Attribs = std::array<float, kAttrCount>;
 
@@ -68,8 +69,13 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
                                  const WindowVertex& c, int width, int height, bool texture_lod,
                                  Emit&& emit);
 
+/// A vertex's fog coordinate (draw.cpp): VertexInput::fog_coords[i], or |z| of its eye-space
+/// position (Mesa's default GL_EYE_PLANE_ABSOLUTE_NV distance).
+float fog_coordinate(const VertexInput& in, std::size_t i);
+
 /// The colour of one fragment before the fragment operations (draw.cpp): lit per pixel for
-/// Phong, else its interpolated or flat colour; then textured; then the secondary colour added.
+/// Phong, else its interpolated or flat colour; then textured; then the secondary colour
+/// added; then fogged. Unclamped.
 glm::vec4 shade_fragment(const ShadeState& shade, const Fragment& f, bool front);
 
 }  // namespace shadelab::detail

@@ -8,110 +8,21 @@
 #include <limits>
 #include <sstream>
 
+#include "differential.hpp"
 #include "fast/simd_targets.hpp"
 #include "random_draws.hpp"
 
 namespace shadelab {
 namespace {
 
+using test::compare_buffers;
+using test::compare_captures;
 using test::RandomDraw;
 using test::RandomDraws;
-
-struct Result {
-  Framebuffer fb;
-  FragmentCapture capture;
-  RenderStats stats;
-};
-
-// Draws every draw into a copy of `initial`; with `context`, through the fast pipeline.
-Result render(const Framebuffer& initial, const std::vector<RandomDraw>& draws,
-              PipelineContext* context) {
-  Result r;
-  r.fb = initial;
-  r.capture.pixels.resize(std::size_t(initial.width) * std::size_t(initial.height));
-  for (const RandomDraw& d : draws) {
-    FragmentState frag = d.frag;
-    if (d.capture) frag.capture = &r.capture;
-    VertexInput in = d.input();
-    draw_triangles(r.fb, d.projection, d.viewport, frag, d.shade, in, &r.stats, context);
-  }
-  return r;
-}
-
-std::string compare_buffers(const Framebuffer& fast, const Framebuffer& ref) {
-  std::ostringstream out;
-  int shown = 0;
-  for (int y = 0; y < ref.height; ++y) {
-    for (int x = 0; x < ref.width; ++x) {
-      std::size_t i = std::size_t(y) * ref.width + x;
-      bool depth_same = std::memcmp(&fast.depth[i], &ref.depth[i], sizeof(float)) == 0;
-      int worst = 0;
-      for (int c = 0; c < 4; ++c) worst = std::max(worst, std::abs(fast.color[i * 4 + c] - ref.color[i * 4 + c]));
-      if (depth_same && fast.stencil[i] == ref.stencil[i] && worst <= 1) continue;
-      if (shown++ < 4) {
-        out << "(" << x << "," << y << ") depth " << fast.depth[i] << " vs " << ref.depth[i] << ", stencil "
-            << int(fast.stencil[i]) << " vs " << int(ref.stencil[i]) << ", colour off by " << worst << "\n";
-      }
-    }
-  }
-  if (shown) out << shown << " pixels differ";
-  return out.str();
-}
-
-std::string compare_captures(const FragmentCapture& fast, const FragmentCapture& ref) {
-  for (std::size_t i = 0; i < ref.pixels.size(); ++i) {
-    const auto &a = fast.pixels[i], &b = ref.pixels[i];
-    if (a.size() != b.size()) return "capture sizes differ at pixel " + std::to_string(i);
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      bool close = glm::all(glm::lessThanEqual(glm::abs(a[k].color - b[k].color), glm::vec4(1.0f / 255.0f)));
-      if (a[k].depth != b[k].depth || !close) return "captured fragment differs at pixel " + std::to_string(i);
-    }
-  }
-  return "";
-}
-
-// Leaves a random draw only state the fast pipeline's SIMD path draws alone and that the draw
-// does not hold on to: no texture, capture, stencil or shadow maps.
-void simd_only(RandomDraw& d) {
-  d.shade.texture = nullptr;
-  d.frag.capture = nullptr;
-  d.frag.stencil.enabled = false;
-  d.capture = false;
-  d.shadow_maps.clear();
-  d.shade.shadow_maps = {};
-}
-
-// Compares one random scene (seed) on every given context; returns "" when all agree.
-std::string check_seed(unsigned seed, const std::vector<PipelineContext*>& contexts) {
-  RandomDraws random(seed);
-  glm::ivec2 size = random.size();
-  Framebuffer initial = random.framebuffer(size);
-  std::vector<RandomDraw> draws;
-  for (int i = random.integer(1, 4); i > 0; --i) draws.push_back(random.draw(size));
-  Result ref = render(initial, draws, nullptr);
-  for (PipelineContext* ctx : contexts) {
-    Result fast = render(initial, draws, ctx);
-    std::string where = "seed " + std::to_string(seed) + " threads " + std::to_string(ctx->threads()) + ": ";
-    const RenderStats &a = fast.stats, &b = ref.stats;
-    if (a.fragments != b.fragments || a.pixels_shaded != b.pixels_shaded ||
-        a.triangles_rasterized != b.triangles_rasterized || a.triangles_culled != b.triangles_culled ||
-        a.triangles_clipped != b.triangles_clipped || a.vertices_lit != b.vertices_lit) {
-      return where + "counts differ: fragments " + std::to_string(a.fragments) + " vs " +
-             std::to_string(b.fragments) + ", shaded " + std::to_string(a.pixels_shaded) + " vs " +
-             std::to_string(b.pixels_shaded);
-    }
-    std::string diff = compare_buffers(fast.fb, ref.fb) + compare_captures(fast.capture, ref.capture);
-    if (!diff.empty()) return where + diff;
-    // Resolve copies of the reference: the next context compares with the unresolved one.
-    Framebuffer ref_fb = ref.fb;
-    FragmentCapture ref_capture = ref.capture;
-    resolve_fragments(fast.fb, fast.capture);
-    resolve_fragments(ref_fb, ref_capture);
-    diff = compare_buffers(fast.fb, ref_fb);
-    if (!diff.empty()) return where + "after resolve: " + diff;
-  }
-  return "";
-}
+using test::render;
+using test::Result;
+using test::check_seed;
+using test::simd_only;
 
 TEST(FastDifferential, RandomDrawsMatchTheReference) {
   PipelineContext one(1), two(2), three(3);

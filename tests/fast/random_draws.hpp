@@ -18,6 +18,7 @@ struct RandomDraw {
   std::vector<glm::vec4> positions, colors, back_colors;
   std::vector<glm::vec3> normals, secondary, back_secondary;
   std::vector<glm::vec2> texcoords;
+  std::vector<float> fog_coords;
   std::vector<Triangle> triangles;
   std::vector<Light> lights;
   std::vector<ShadowMap> shadow_maps;
@@ -38,6 +39,7 @@ struct RandomDraw {
     in.secondary_colors = secondary;
     in.back_secondary_colors = back_secondary;
     in.texcoords = texcoords;
+    in.fog_coords = fog_coords;
     in.constant_color = constant_color;
     in.triangles = triangles;
     return in;
@@ -79,6 +81,43 @@ class RandomDraws {
       for (std::uint8_t& c : fb.color) c = std::uint8_t(integer(0, 255));
     }
     return fb;
+  }
+
+  /// Adds GL's other per-fragment state to a draw: fog (any mode, sometimes with given fog
+  /// coordinates), a scissor box, the alpha test, a logic op and a polygon stipple, each
+  /// sometimes. Logic ops that mix source and destination bits turn a colour one step off
+  /// into bytes far apart, and the fast pipeline's per-pixel lighting and fog are within a
+  /// step of the reference's, not equal: those ops come without them.
+  void fragment_extras(RandomDraw& d, glm::ivec2 fb_size) {
+    FogState& fog = d.shade.fog;
+    fog.enabled = chance(0.5);
+    fog.mode = FogMode(integer(0, 2));
+    fog.color = glm::vec3(color());
+    fog.start = uniform(-2, 8);
+    fog.end = chance(0.05) ? fog.start : uniform(0, 30);
+    fog.density = chance(0.05) ? 0.0f : uniform(0, 0.6f);
+    if (chance(0.2)) for (std::size_t i = 0; i < d.positions.size(); ++i) d.fog_coords.push_back(uniform(-5, 40));
+    FragmentState& f = d.frag;
+    if (chance(0.4)) {
+      int x = integer(-8, fb_size.x), y = integer(-8, fb_size.y);
+      f.scissor = {true, x, y, integer(0, fb_size.x + 8), integer(0, fb_size.y + 8)};
+      if (chance(0.1)) f.scissor = {true, 0, 0, fb_size.x, fb_size.y};
+    }
+    if (chance(0.4)) f.alpha_test = {true, compare_func(), chance(0.2) ? float(integer(0, 4)) / 4.0f : uniform(-0.2f, 1.2f)};
+    if (chance(0.3)) {
+      f.logic_op = {true, LogicOp(integer(0, 15))};
+      const LogicOp op = f.logic_op.op;
+      const bool mixes = !(op == LogicOp::kClear || op == LogicOp::kCopy || op == LogicOp::kNoop ||
+                           op == LogicOp::kInvert || op == LogicOp::kCopyInverted || op == LogicOp::kSet);
+      if (mixes) {
+        fog.enabled = false;
+        if (d.shade.lighting && d.shade.shading == ShadingMode::kPhong) d.shade.shading = ShadingMode::kGouraud;
+      }
+    }
+    if (chance(0.3)) {
+      f.stipple.enabled = true;
+      for (std::uint32_t& row : f.stipple.rows) row = std::uint32_t(rng_()) & (chance(0.3) ? ~0u : std::uint32_t(rng_()));
+    }
   }
 
   RandomDraw draw(glm::ivec2 fb_size) {
