@@ -17,6 +17,7 @@ PACKAGES=(
   # shadelab as a GLVND vendor (libGLX_shadelab) and its tests: X11, GLVND's vendor headers,
   # GLUT and GLU programs, Xvfb, and Mesa's own GLX vendor (llvmpipe) to compare with
   libx11-dev libxext-dev libglvnd-dev freeglut3-dev libglu1-mesa-dev xvfb libgl1-mesa-dri libglx-mesa0
+  piglit mesa-utils  # tests/piglit/run.sh: piglit's GL 1.x tests, glxinfo for the GL version
   gnuplot-nox     # bench/run.sh plots
   valgrind        # bench/instructions.sh: instructions per frame, steady on a noisy machine
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)

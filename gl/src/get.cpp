@@ -212,7 +212,7 @@ const GLubyte* exec::GetString(GlContext& c, GLenum name) {
   static const char* const kVersion = SHADELAB_GL_VERSION_NUMBER " shadelab " SHADELAB_VERSION;
   static const char* const kExtensions =
       "GL_EXT_bgra GL_EXT_rescale_normal GL_EXT_separate_specular_color "
-      "GL_SGIS_texture_edge_clamp GL_ARB_texture_non_power_of_two";
+      "GL_SGIS_texture_edge_clamp GL_ARB_texture_non_power_of_two ";  // a space after each, as Mesa's
   const char* result = nullptr;
   switch (name) {
     case GL_VENDOR: result = kVendor; break;

@@ -4,10 +4,11 @@
    with the scene turned a little each frame. Built with `cc glut_scene.c -lGL -lGLU -lglut -lm`
    and nothing of shadelab's: it runs on Mesa and on shadelab alike.
 
-     glut_scene [--frames N] [--dump N FILE.ppm]
+     glut_scene [--single] [--frames N] [--dump N FILE.ppm]
 
+   --single         a single-buffered window (GLUT_SINGLE): each frame ends with glFlush
    --frames N       exits (status 0) after showing frame N
-   --dump N FILE    before showing frame N, writes the back buffer as a binary PPM (glReadPixels) */
+   --dump N FILE    before showing frame N, writes the frame as a binary PPM (glReadPixels) */
 #include <GL/glut.h>
 #include <GL/glu.h>
 
@@ -15,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int frame = 0, last_frame = 0, dump_frame = 0;
+static int frame = 0, last_frame = 0, dump_frame = 0, single = 0;
 static const char* dump_path = NULL;
 static GLUquadric* quadric = NULL;
 
@@ -86,7 +87,8 @@ static void display(void) {
   glPopMatrix();
 
   if (dump_path && frame == dump_frame) write_ppm(dump_path);
-  glutSwapBuffers();
+  if (single) glFlush();
+  else glutSwapBuffers();
   if (last_frame > 0 && frame >= last_frame) exit(0);
 }
 
@@ -107,10 +109,11 @@ static void tick(int value) {
 int main(int argc, char** argv) {
   glutInit(&argc, argv);
   for (int i = 1; i < argc; ++i) {
-    if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc) last_frame = atoi(argv[++i]);
+    if (strcmp(argv[i], "--single") == 0) single = 1;
+    else if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc) last_frame = atoi(argv[++i]);
     else if (strcmp(argv[i], "--dump") == 0 && i + 2 < argc) dump_frame = atoi(argv[++i]), dump_path = argv[++i];
   }
-  glutInitDisplayMode(GLUT_DOUBLE | GLUT_RGB | GLUT_DEPTH);
+  glutInitDisplayMode((single ? GLUT_SINGLE : GLUT_DOUBLE) | GLUT_RGB | GLUT_DEPTH);
   glutInitWindowSize(320, 240);
   glutCreateWindow("shadelab platform test: GLUT + GLU");
   glEnable(GL_DEPTH_TEST);
