@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "gl/generated/version.hpp"
+
 #include "gl/egl/egl_vendor.hpp"
 
 namespace shadelab::gl::egl {
@@ -36,14 +38,11 @@ bool parse(const EGLint* list, Attributes& a) {
   return true;
 }
 
-// The OpenGL version the GL front end reports (its glGetString(GL_VERSION) begins with it).
-void implemented_version(GlContext& c, int& major, int& minor) {
-  GlContext* saved = current_context();
-  current_context() = &c;
-  const GLubyte* version = glGetString(GL_VERSION);
-  current_context() = saved;
+// The OpenGL version the GL front end reports: that of the newest version whose every command
+// it implements (generated from gl/api/pending.txt).
+void implemented_version(int& major, int& minor) {
   major = 1, minor = 0;
-  if (version) std::sscanf(reinterpret_cast<const char*>(version), "%d.%d", &major, &minor);
+  std::sscanf(SHADELAB_GL_VERSION_NUMBER, "%d.%d", &major, &minor);
 }
 
 Display* initialized_display(EGLDisplay dpy) {
@@ -115,7 +114,7 @@ EGLContext create_context(EGLDisplay dpy, EGLConfig config, EGLContext share, co
   c->gl = std::make_unique<GlContext>(GLenum(GL_RGBA), cfg->surface.depth_bits, cfg->surface.stencil_bits,
                                       shared ? shared->gl->textures.names : nullptr);
   int major = 1, minor = 0;
-  implemented_version(*c->gl, major, minor);
+  implemented_version(major, minor);
   // EGL_KHR_create_context: a version the configuration cannot provide is EGL_BAD_MATCH.
   if (a.major > major || (a.major == major && a.minor > minor)) return fail(EGL_BAD_MATCH, EGL_NO_CONTEXT);
   d->contexts.insert(c.get());

@@ -5,11 +5,10 @@
 // eglQueryString, the wait calls, and the calls for what this headless vendor has not (window
 // and pixmap surfaces, texture binding, client buffers), which answer with the errors EGL 1.5
 // gives for them.
-#include <GL/osmesa.h>
-
 #include <cstring>
 
 #include "gl/egl/egl_vendor.hpp"
+#include "gl/src/proc_table.hpp"
 
 #include <glvnd/libeglabi.h>
 
@@ -179,7 +178,7 @@ void* get_proc_address(const char* name) {
   }
   // GL functions from the GL front end's table; OSMesa's own are not GL's.
   if (std::strncmp(name, "gl", 2) != 0) return nullptr;
-  return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+  return reinterpret_cast<void*>(find_proc(name));
 }
 
 // No EGL extension function of this vendor needs a dispatch stub: the extensions offered add

@@ -7,6 +7,8 @@
 
 
 #include <cstdio>
+
+#include "gl/generated/version.hpp"
 #include <set>
 
 #include "gl/glx/glx_surface.hpp"
@@ -21,15 +23,11 @@ std::set<GlxContext*>& contexts() {
 
 thread_local GlxContext* t_current = nullptr;
 
-// The OpenGL version the GL front end reports (glGetString(GL_VERSION) begins with it; it is
-// generated from the library's coverage, so it is read, not restated here).
-void implemented_version(GlContext& c, int& major, int& minor) {
-  GlContext* saved = current_context();
-  current_context() = &c;
-  const GLubyte* version = glGetString(GL_VERSION);
-  current_context() = saved;
+// The OpenGL version the GL front end reports: that of the newest version whose every command
+// it implements (generated from gl/api/pending.txt).
+void implemented_version(int& major, int& minor) {
   major = 1, minor = 0;
-  if (version) std::sscanf(reinterpret_cast<const char*>(version), "%d.%d", &major, &minor);
+  std::sscanf(SHADELAB_GL_VERSION_NUMBER, "%d.%d", &major, &minor);
 }
 
 // GLX_ARB_create_context's attributes. False with the X error to raise.
@@ -125,7 +123,7 @@ GLXContext create_context(Display* dpy, const FbConfig* config, GLXContext share
   c->gl = std::make_unique<GlContext>(GLenum(GL_RGBA), s.depth_bits, s.stencil_bits,
                                       shared ? shared->gl->textures.names : nullptr);
   int major = 1, minor = 0;
-  implemented_version(*c->gl, major, minor);
+  implemented_version(major, minor);
   if (a.major > major || (a.major == major && a.minor > minor)) {
     // A version shadelab does not implement: what Mesa's GLX raises for a version its driver
     // lacks (GLX_ARB_create_context: "does not support ... the requested API major and minor

@@ -3,12 +3,11 @@
 // font's glyphs with glBitmap). Both work on GL front-end state only; glXUseXFont reaches the
 // display-list and bitmap calls through the GL's own table, so that it uses whatever the GL
 // front end implements.
-#include <GL/osmesa.h>
-
 #include <vector>
 
 #include "gl/glx/glx_protocol.hpp"
 #include "gl/glx/glx_context.hpp"
+#include "gl/src/proc_table.hpp"
 
 namespace shadelab::gl::glx {
 namespace {
@@ -62,7 +61,7 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
 
 template <class F>
 F gl_function(const char* name) {
-  return reinterpret_cast<F>(OSMesaGetProcAddress(name));
+  return reinterpret_cast<F>(find_proc(name));
 }
 
 // One glyph of `font` as a glBitmap image: rows from the bottom, most significant bit first,

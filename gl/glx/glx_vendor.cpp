@@ -8,8 +8,8 @@
 
 #include "gl/glx/glx_context.hpp"
 #include "gl/glx/glx_protocol.hpp"
+#include "gl/src/proc_table.hpp"
 
-#include <GL/osmesa.h>
 #include <glvnd/libglxabi.h>
 
 namespace shadelab::gl::glx {
@@ -112,7 +112,7 @@ const Proc kGlxProcs[] = {
 // GL functions come from the GL front end's table; OSMesa's own functions are not GL's.
 void* gl_proc(const char* name) {
   if (std::strncmp(name, "gl", 2) != 0 || std::strncmp(name, "glX", 3) == 0) return nullptr;
-  return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
+  return reinterpret_cast<void*>(find_proc(name));
 }
 
 void* get_proc_address(const GLubyte* name) {
