@@ -138,20 +138,22 @@ bool write_frame(const std::string& pattern, int number, const run::Frame& frame
 int report(const RunOptions& o, const run::ChildResult& r) {
   using End = run::ChildResult::End;
   const std::string& program = o.command.front();
+  // Frames are counted only when the program was handed the frame socket.
+  const bool counted = o.frames > 0 || !o.capture.empty();
+  const std::string shown = counted ? " after " + std::to_string(r.frames) + " frames" : "";
   switch (r.end) {
     case End::kExited:
       if (o.frames > 0 && r.frames < o.frames)
         std::cerr << "shadelab run: " << program << " ended after " << r.frames << " of " << o.frames << " frames\n";
       return r.status;
     case End::kSignaled:
-      std::cerr << "shadelab run: " << program << " was killed by signal " << signal_name(r.status) << " after "
-                << r.frames << " frames\n";
+      std::cerr << "shadelab run: " << program << " was killed by signal " << signal_name(r.status) << shown << "\n";
       return 128 + r.status;
     case End::kFramesDone: return kExitOk;
     case End::kFrameError: return kExitFailure;
     case End::kTimedOut:
-      std::cerr << "shadelab run: " << program << " did not end within " << o.timeout << " s (" << r.frames
-                << " frames shown); stopped\n";
+      std::cerr << "shadelab run: " << program << " did not end within " << o.timeout << " s" << shown
+                << "; stopped\n";
       return kExitTimeout;
     case End::kInterrupted: return 128 + SIGINT;
     case End::kNotStarted:
