@@ -220,6 +220,12 @@ bool config_attribute(const FbConfig& c, int attribute, int& value) {
   }
 }
 
+XID new_xid(Display* dpy) {
+  XID id = XAllocID(dpy);
+  XNoOp(dpy);
+  return id;
+}
+
 void send_x_error(Display* dpy, unsigned char code, XID resource, int minor_opcode) {
   DisplayState* d = display_state(dpy);
   if (!d) return;

@@ -64,7 +64,7 @@ GLXPixmap make_pixmap(Display* dpy, const FbConfig* config, Pixmap pixmap, int m
     send_x_error(dpy, BadMatch, pixmap, minor_opcode);
     return None;
   }
-  return add_surface(*d, XAllocID(dpy),
+  return add_surface(*d, new_xid(dpy),
                      std::make_unique<XSurface>(dpy, pixmap, XSurface::Kind::kPixmap, *config, config->visual,
                                                 config->layout));
 }
@@ -175,7 +175,7 @@ GLXPbuffer create_pbuffer(Display* dpy, GLXFBConfig config, const int* attribute
   auto s = std::make_unique<XSurface>(dpy, None, XSurface::Kind::kPbuffer, *c, c->visual, c->layout, width, height);
   s->preserved = preserved != False;
   s->largest = largest != False;
-  return add_surface(*d, XAllocID(dpy), std::move(s));
+  return add_surface(*d, new_xid(dpy), std::move(s));
 }
 
 GLXWindow create_window(Display* dpy, GLXFBConfig config, Window window, const int* /*attributes*/) {
@@ -196,7 +196,7 @@ GLXWindow create_window(Display* dpy, GLXFBConfig config, Window window, const i
     send_x_error(dpy, BadMatch, window, X_GLXCreateWindow);
     return None;
   }
-  return add_surface(*d, XAllocID(dpy),
+  return add_surface(*d, new_xid(dpy),
                      std::make_unique<XSurface>(dpy, window, XSurface::Kind::kWindow, *c, visual, layout));
 }
 

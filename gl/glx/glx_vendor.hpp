@@ -69,6 +69,10 @@ bool visual_layout(Display* dpy, const XVisualInfo& visual, platform::ImageLayou
 /// glXGetFBConfigAttrib's answer (GLX 1.4 table 3.1); false for an unknown attribute.
 bool config_attribute(const FbConfig& c, int attribute, int& value);
 
+/// A new XID for a GLX drawable that has no server resource (pbuffers, GLX pixmaps, GLX
+/// windows are the vendor's own). XAllocID refills its next ID only when a request follows: a
+/// no-op request is queued after it, or the next XAllocID asserts.
+XID new_xid(Display* dpy);
 /// Generates an X error as the server would (GLX 1.4 section 3.3: errors are reported through
 /// the application's X error handler): `glx_code` is relative to the GLX error base.
 void send_x_error(Display* dpy, unsigned char code, XID resource, int minor_opcode);

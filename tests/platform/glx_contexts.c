@@ -8,8 +8,8 @@
 
    Checks: configurations, a double-buffered window (its swap reaches the X window), a
    single-buffered one (its glFlush does), texture sharing between contexts, two threads drawing
-   with two contexts at once, release, destroying a current context, a pbuffer, a GLX pixmap,
-   glXGetProcAddress, following a window's resize. */
+   with two contexts at once, release, destroying a current context, glXCopyContext, a pbuffer,
+   a GLX pixmap, glXGetProcAddress, following a window's resize. */
 #include <GL/gl.h>
 #include <GL/glx.h>
 #include <X11/Xlib.h>
@@ -188,6 +188,30 @@ static void destroy_current(void) {
   glXDestroyPbuffer(dpy, pb);
 }
 
+static void copy_context(void) {
+  GLXFBConfig c = choose(True);
+  int pbuffer_attributes[] = {GLX_PBUFFER_WIDTH, 8, GLX_PBUFFER_HEIGHT, 8, None};
+  GLXPbuffer pb = glXCreatePbuffer(dpy, c, pbuffer_attributes);
+  GLXContext from = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+  GLXContext to = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+  glXMakeContextCurrent(dpy, pb, pb, from);
+  glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+  glDepthFunc(GL_GREATER);
+  glXMakeContextCurrent(dpy, None, None, NULL);
+  glXCopyContext(dpy, from, to, GL_COLOR_BUFFER_BIT); /* the colour group only */
+  glXMakeContextCurrent(dpy, pb, pb, to);
+  GLfloat clear[4];
+  GLint depth_func = 0;
+  glGetFloatv(GL_COLOR_CLEAR_VALUE, clear);
+  glGetIntegerv(GL_DEPTH_FUNC, &depth_func);
+  check(clear[0] == 0.25f && clear[2] == 0.75f && depth_func == GL_LESS, "copy_context",
+        "glXCopyContext did not copy exactly the groups of its mask");
+  glXMakeContextCurrent(dpy, None, None, NULL);
+  glXDestroyContext(dpy, from);
+  glXDestroyContext(dpy, to);
+  glXDestroyPbuffer(dpy, pb);
+}
+
 static void pixmap(void) {
   int attributes[] = {GLX_RGBA, GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1, None};
   XVisualInfo* v = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
@@ -333,6 +357,7 @@ int main(int argc, char** argv) {
   single_buffered();
   sharing();
   destroy_current();
+  copy_context();
   pixmap();
   two_threads();
   proc_addresses();
