@@ -1,6 +1,7 @@
 // Sequences of GL calls: the input bytes are decoded into libshadelab-gl calls on a 32x32
 // OSMesa context, with arbitrary enums (valid and not), values (NaN, infinities, huge,
-// negative), calls between glBegin and glEnd or outside, in any order. Only what OpenGL cannot
+// negative), calls between glBegin and glEnd or outside, in any order, compiled into display
+// lists or not (lists calling lists, themselves, glCallLists over up to 65,536 names). Only what OpenGL cannot
 // defend against is kept valid: every pointer handed to the library points into buffers of
 // this program that are large enough for what the call may read or write.
 #include <GL/gl.h>
@@ -53,7 +54,8 @@ class Input {
         GL_CURRENT_COLOR, GL_MATRIX_MODE, GL_MAX_MODELVIEW_STACK_DEPTH, GL_UNPACK_ALIGNMENT,
         GL_PACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_PACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
         GL_PACK_SKIP_PIXELS, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VENDOR, GL_EXTENSIONS,
-        0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
+        GL_COMPILE, GL_COMPILE_AND_EXECUTE, GL_2_BYTES, GL_3_BYTES, GL_4_BYTES, GL_LIST_INDEX,
+        GL_LIST_MODE, GL_LIST_BASE, GL_MAX_LIST_NESTING, 0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
 
@@ -76,6 +78,34 @@ struct Buffers {
   // (4 float components), with alignment padding; far more than any allowed call can touch.
   alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 64];
   double out[32];
+  // glCallLists' names: bytes (up to 16 names of up to 4 bytes), and 65,536 GL_UNSIGNED_INT
+  // names of which only the first few name lists the calls can define.
+  unsigned char list_names[64];
+  GLuint many_names[65536];
+};
+
+// Lists the calls may define are 1..9. So that executing one stays cheap (a list may call
+// lists that call lists, up to 64 deep, and GL lets a list call itself), a list being compiled
+// calls only lists of larger names, at most twice: a list's execution runs at most 2^9 others.
+struct ListCalls {
+  GLint compiling = 0;  // GL_LIST_INDEX when last asked
+  int calls = 0;        // glCallList calls compiled into it so far
+  // The name the next glCallList may use (0: none), given the fuzzer's choice.
+  GLuint allowed(GLuint wanted) {
+    GLint index = -1;
+    glGetIntegerv(GL_LIST_INDEX, &index);  // unchanged between glBegin and glEnd: no call then
+    if (index < 0) return 0;
+    if (index != compiling) compiling = index, calls = 0;
+    if (index == 0) return wanted;
+    if (calls == 2 || wanted <= GLuint(index)) return 0;
+    ++calls;
+    return wanted;
+  }
+  bool outside_lists() {
+    GLint index = -1;
+    glGetIntegerv(GL_LIST_INDEX, &index);
+    return index == 0;
+  }
 };
 
 }  // namespace
@@ -88,6 +118,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::uint8_t seed = in.byte();
   for (std::size_t i = 0; i < sizeof b->arrays; ++i) (&b->arrays[0][0])[i] = std::uint8_t(i * 37 + seed);
   for (std::size_t i = 0; i < 256; ++i) b->indices[i] = std::uint32_t(i * 7 + seed) % kElements;
+  for (std::size_t i = 0; i < sizeof b->list_names; ++i) b->list_names[i] = std::uint8_t(i % 11 == 0 ? seed : i % 7);
+  for (std::size_t i = 0; i < 65536; ++i) b->many_names[i] = GLuint(i < 4 ? 1 + (seed + i) % 9 : 1000 + i);
+  ListCalls list_calls;
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
   if (!ctx) return 0;
   if (!OSMesaMakeCurrent(ctx, b->color.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
@@ -97,7 +130,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 40) {
+    switch (in.byte() % 45) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -182,6 +215,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
       case 37: (void)glGetError(); break;
       case 38: glColorMaterial(in.any_enum(), in.any_enum()); break;
+      case 40: glNewList(GLuint(in.small(-1, 9)), in.byte() % 4 ? GL_COMPILE + in.byte() % 2 : in.any_enum()); break;
+      case 41: glEndList(); break;
+      case 42: {
+        const GLuint name = list_calls.allowed(GLuint(in.small(0, 10)));
+        if (name) glCallList(name);
+        break;
+      }
+      case 43:  // outside lists being compiled only (so that nothing recurses unboundedly)
+        if (list_calls.outside_lists()) {
+          if (in.byte() % 4 == 0) glCallLists(in.small(0, 255) * 256 + in.byte(), GL_UNSIGNED_INT, b->many_names);
+          else glCallLists(in.small(-1, 16), in.any_enum(), b->list_names);
+        }
+        break;
+      case 44:
+        switch (in.byte() % 4) {
+          case 0: (void)glGenLists(in.byte() % 8 ? in.small(-1, 8) : 0x7fffffff - in.small(0, 3)); break;
+          case 1: glDeleteLists(GLuint(in.small(-1, 10)), in.byte() % 8 ? in.small(-1, 4) : 0x7fffffff); break;
+          case 2: (void)glIsList(GLuint(in.small(-1, 10))); break;
+          default: glListBase(GLuint(in.small(-2, 4))); break;
+        }
+        break;
       case 39: {
         glFinish();
         GLint w, h, bytes;

@@ -121,7 +121,7 @@ GLXContext create_context(Display* dpy, const FbConfig* config, GLXContext share
   c->config = config;
   const platform::SurfaceConfig& s = config->surface;
   c->gl = std::make_unique<GlContext>(GLenum(GL_RGBA), s.depth_bits, s.stencil_bits,
-                                      shared ? shared->gl->textures.names : nullptr);
+                                      shared ? shared->gl.get() : nullptr);
   int major = 1, minor = 0;
   implemented_version(major, minor);
   if (a.major > major || (a.major == major && a.minor > minor)) {

@@ -7,7 +7,9 @@
 #include <mutex>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/convert.hpp"
+#include "gl/src/dlist.hpp"
 #include "gl/src/draw.hpp"
 #include "gl/src/primitive.hpp"
 
@@ -170,7 +172,113 @@ void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei 
   a = {a.enabled, size, type, stride, ptr};
 }
 
+// Array elements dereferenced for a display list: per element, the attributes
+// glArrayElement would set (GL 1.1 section 2.8), each array null when it is disabled.
+void write_elements(GlContext& c, ListWriter& w, std::size_t count, const auto& index_of) {
+  const ClientArrays& a = c.arrays;
+  std::vector<float> normals, colors, texcoords, positions;
+  auto put = [](std::vector<float>& out, const glm::vec4& v, int n) {
+    for (int k = 0; k < n; ++k) out.push_back(v[k]);
+  };
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = index_of(k);
+    if (usable(a.normal)) put(normals, fetch(a.normal, i, glm::vec4(0.0f), true), 3);
+    if (usable(a.color)) put(colors, fetch(a.color, i, glm::vec4(0, 0, 0, 1), true), 4);
+    if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false), 4);
+    if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false), 4);
+  }
+  w.scalar(std::uint64_t(count));
+  w.array(usable(a.normal) ? normals.data() : nullptr, normals.size());
+  w.array(usable(a.color) ? colors.data() : nullptr, colors.size());
+  w.array(usable(a.texcoord) ? texcoords.data() : nullptr, texcoords.size());
+  w.array(usable(a.vertex) ? positions.data() : nullptr, positions.size());
+}
+
+// A draw in a display list: its mode and elements. Drawn only if the vertex array is enabled,
+// as the command itself draws.
+void record_draw(GlContext& c, GLenum mode, std::size_t count, const auto& index_of) {
+  if (!usable(c.arrays.vertex)) return;
+  ListWriter w(c, Opcode::kArrayDraw);
+  w.scalar(mode);
+  write_elements(c, w, count, index_of);
+}
+
+// Recorded elements, read back.
+struct Elements {
+  std::uint64_t count;
+  const float *normals, *colors, *texcoords, *positions;
+  explicit Elements(ListReader& r)
+      : count(r.scalar<std::uint64_t>()), normals(r.array<float>()), colors(r.array<float>()),
+        texcoords(r.array<float>()), positions(r.array<float>()) {}
+
+  // Element k's attributes become current, then its vertex is specified (outside glBegin/glEnd
+  // it specifies none).
+  void specify(GlContext& c, std::uint64_t k) const {
+    if (normals) c.current.normal = glm::vec3(normals[3 * k], normals[3 * k + 1], normals[3 * k + 2]);
+    if (colors) {
+      c.current.color = glm::vec4(colors[4 * k], colors[4 * k + 1], colors[4 * k + 2], colors[4 * k + 3]);
+      apply_color_material(c);
+    }
+    if (texcoords) {
+      c.current.texcoord = glm::vec4(texcoords[4 * k], texcoords[4 * k + 1], texcoords[4 * k + 2], texcoords[4 * k + 3]);
+    }
+    if (positions && c.prim.active) {
+      emit_vertex(c, glm::vec4(positions[4 * k], positions[4 * k + 1], positions[4 * k + 2], positions[4 * k + 3]));
+    }
+  }
+};
+
 }  // namespace
+
+void replay_internal::ArrayElements(GlContext& c, ListReader& r) {
+  const Elements e(r);
+  for (std::uint64_t k = 0; k < e.count; ++k) e.specify(c, k);
+}
+
+// A recorded glDrawArrays / glDrawElements: as the command draws them (glDrawArrays' rule
+// between glBegin and glEnd included), leaving the current attributes and material as they
+// were, as Mesa does.
+void replay_internal::ArrayDraw(GlContext& c, ListReader& r) {
+  const GLenum mode = r.scalar<GLenum>();
+  const Elements e(r);
+  if (c.prim.active) return c.set_error(GL_INVALID_OPERATION);
+  const CurrentAttribs saved = c.current;
+  const Material front = c.lighting.front, back = c.lighting.back;
+  begin_primitive(c, mode);
+  for (std::uint64_t k = 0; k < e.count; ++k) e.specify(c, k);
+  end_primitive(c);
+  c.current = saved;
+  c.lighting.front = front, c.lighting.back = back;
+}
+
+// Vertex-array commands in a display list take the arrays' contents of the moment (GL 1.1
+// section 5.4). Argument errors are recorded (as Mesa's compile errors) and nothing else.
+void save::ArrayElement(GlContext& c, GLint i) {
+  if (i < 0) return record_error(c, GL_INVALID_VALUE);
+  ListWriter w(c, Opcode::kArrayElements);
+  write_elements(c, w, 1, [&](std::size_t) { return std::size_t(i); });
+}
+
+void save::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
+  if (mode > GL_POLYGON) return record_error(c, GL_INVALID_ENUM);
+  if (first < 0 || count < 0) return record_error(c, GL_INVALID_VALUE);
+  record_draw(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
+}
+
+void save::DrawElements(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (mode > GL_POLYGON) return record_error(c, GL_INVALID_ENUM);
+  if (count < 0) return record_error(c, GL_INVALID_VALUE);
+  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
+    return record_error(c, GL_INVALID_ENUM);
+  }
+  if (!indices) return count == 0 ? void() : record_error(c, GL_INVALID_VALUE);
+  const auto* bytes = static_cast<const unsigned char*>(indices);
+  record_draw(c, mode, std::size_t(count), [&](std::size_t k) -> std::size_t {
+    if (type == GL_UNSIGNED_BYTE) return bytes[k];
+    if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
+    return load<GLuint>(bytes + 4 * k);
+  });
+}
 
 void exec::VertexPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
   set_pointer(c, c.arrays.vertex, size, type, stride, ptr, 2, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});

@@ -7,7 +7,7 @@
 
 namespace shadelab::gl {
 
-GlContext::GlContext(GLenum format, int depth, int stencil, std::shared_ptr<TextureNames> shared)
+GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* share)
     : buffer_format(format), depth_bits(depth), stencil_bits(stencil) {
   for (int i = 0; i < kMaxLights; ++i) {
     lighting.lights[std::size_t(i)] = default_light(i);
@@ -16,7 +16,8 @@ GlContext::GlContext(GLenum format, int depth, int stencil, std::shared_ptr<Text
   // GL's default back material equals the front one; both are Material's defaults.
   textures.default_texture = std::make_shared<TextureObject>();
   textures.bound = textures.default_texture;
-  textures.names = shared ? std::move(shared) : std::make_shared<TextureNames>();
+  textures.names = share ? share->textures.names : std::make_shared<TextureNames>();
+  lists.names = share ? share->lists.names : std::make_shared<ListNames>();
   const char* reference = std::getenv("SHADELAB_REFERENCE");
   use_reference = reference && *reference && std::string_view(reference) != "0";
 }

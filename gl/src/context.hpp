@@ -20,6 +20,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "gl/src/dlist_state.hpp"
 #include "gl/src/primitive.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
@@ -166,6 +167,9 @@ struct Primitive {
   // of a lit primitive are less than half as large, to write in glVertex and read in glEnd.
   std::vector<VertexColors> colors;
   bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
+  // Begun by a display list being executed: llvmpipe then splits quads from their second
+  // vertex (docs/gl-conformance.md).
+  bool in_list = false;
   // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
   // at glBegin. A material change inside the primitive lights the vertices so far and ends
   // the deferral (settle_lighting).
@@ -264,6 +268,7 @@ struct GlContext {
   TextureState textures;
   PixelStore pack, unpack;
   ClientArrays arrays;
+  ListState lists;
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;
@@ -288,7 +293,9 @@ struct GlContext {
   SurfaceHooks* surface = nullptr;  // the drawable it draws into, when a platform bound one
   bool double_buffered = false;     // GL_DRAW_BUFFER / GL_READ_BUFFER are GL_BACK
 
-  GlContext(GLenum format, int depth, int stencil, std::shared_ptr<TextureNames> shared);
+  /// A context with OpenGL's initial state; it shares texture objects and display lists
+  /// with `share` when there is one (OSMesa's sharelist, GLX's share context).
+  GlContext(GLenum format, int depth, int stencil, const GlContext* share);
 
   /// Records `code` unless an earlier error is still unread (GL 1.1 section 2.5).
   void set_error(GLenum code) {

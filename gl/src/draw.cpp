@@ -314,7 +314,8 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   }
   std::vector<PrimitiveTriangle>& tris = c.immediate_scratch.pieces;
   tris.clear();
-  decompose(p.mode, count, p.odd_strip_start, outside ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
+  const bool second = outside || p.in_list;
+  decompose(p.mode, count, p.odd_strip_start, second ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
   if (tris.empty()) return;
   bool flat = c.lighting.shade_model == GL_FLAT;
   for (const PrimitiveTriangle& t : tris) {
@@ -524,6 +525,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.vertices.clear();
   p.colors.clear();
   p.odd_strip_start = false;
+  p.in_list = c.lists.depth > 0;
   p.modelview = c.modelview.top();
   glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
   p.normal_matrix = glm::transpose(inv);

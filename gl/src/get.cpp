@@ -166,6 +166,10 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
+    case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
+    case GL_LIST_BASE: out = ints({double(c.lists.base)}); return true;
+    case GL_LIST_INDEX: out = ints({double(c.lists.index)}); return true;
+    case GL_LIST_MODE: out = ints({double(c.lists.mode)}); return true;
     default: return false;
   }
 }

@@ -4,6 +4,7 @@
 #include <glm/mat3x3.hpp>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
 
@@ -241,6 +242,15 @@ void exec::GetLightfv(GlContext& c, GLenum light, GLenum pname, GLfloat* params)
 void exec::GetLightiv(GlContext& c, GLenum light, GLenum pname, GLint* params) { get_light_call(c, light, pname, params); }
 void exec::GetMaterialfv(GlContext& c, GLenum face, GLenum pname, GLfloat* params) { get_material_call(c, face, pname, params); }
 void exec::GetMaterialiv(GlContext& c, GLenum face, GLenum pname, GLint* params) { get_material_call(c, face, pname, params); }
+
+// How many values the vector forms read, for their display-list savers (0 for a pname they
+// reject: they read nothing then).
+std::size_t save_count::Lightfv(GLenum pname) { return std::size_t(light_param_count(pname)); }
+std::size_t save_count::Lightiv(GLenum pname) { return std::size_t(light_param_count(pname)); }
+std::size_t save_count::LightModelfv(GLenum pname) { return pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
+std::size_t save_count::LightModeliv(GLenum pname) { return pname == GL_LIGHT_MODEL_AMBIENT ? 4 : 1; }
+std::size_t save_count::Materialfv(GLenum pname) { return std::size_t(material_param_count(pname)); }
+std::size_t save_count::Materialiv(GLenum pname) { return std::size_t(material_param_count(pname)); }
 
 void exec::ColorMaterial(GlContext& c, GLenum face, GLenum mode) {
   bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;

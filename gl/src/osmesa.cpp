@@ -33,8 +33,7 @@ OSMesaContext create(GLenum format, GLint depth, GLint stencil, OSMesaContext sh
   int depth_bits = 0, stencil_bits = 0;
   choose_bits(depth, stencil, depth_bits, stencil_bits);
   try {
-    std::shared_ptr<TextureNames> names = share ? share->textures.names : nullptr;
-    return new osmesa_context(format, depth_bits, stencil_bits, std::move(names));
+    return new osmesa_context(format, depth_bits, stencil_bits, share);
   } catch (...) {
     return nullptr;
   }

@@ -66,6 +66,21 @@ double to_signed(float v, double max) {
 
 }  // namespace
 
+std::vector<unsigned char> copy_image(const PixelStore& unpack, int width, int height,
+                                      int components, int type_size, const void* pixels) {
+  const PixelLayout in = pixel_layout(unpack, components, type_size, width);
+  const std::size_t row = in.pixel_stride * std::size_t(width);
+  std::vector<unsigned char> out(row * std::size_t(height));
+  const auto* src = static_cast<const unsigned char*>(pixels);
+  for (int y = 0; y < height; ++y) std::memcpy(&out[row * std::size_t(y)], src + in.offset(0, y), row);
+  if (unpack.swap_bytes && type_size > 1) {  // GL 1.1 section 3.6.3: each component's bytes reversed
+    for (std::size_t i = 0; i + std::size_t(type_size) <= out.size(); i += std::size_t(type_size)) {
+      std::reverse(out.begin() + std::ptrdiff_t(i), out.begin() + std::ptrdiff_t(i) + type_size);
+    }
+  }
+  return out;
+}
+
 float read_component(const unsigned char* p, GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE: return float(load<GLubyte>(p) / 255.0);

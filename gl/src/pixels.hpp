@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "gl/src/context.hpp"
 
@@ -36,6 +37,13 @@ float read_component(const unsigned char* p, GLenum type);
 
 /// Writes `v` as a component of `type` (integers from [0, 1] or [-1, 1], rounded).
 void write_component(unsigned char* p, GLenum type, float v);
+
+/// A client image of width x height pixels of `components` components of `type_size` bytes,
+/// read with the unpack state `unpack` (skips, row length, alignment, byte swapping) and
+/// returned tightly packed (rows of width pixels, alignment 1, native byte order): what a
+/// display list keeps of an image (GL 1.1 section 5.4), replayed with DefaultUnpack.
+std::vector<unsigned char> copy_image(const PixelStore& unpack, int width, int height,
+                                      int components, int type_size, const void* pixels);
 
 /// An unpacked colour pixel of `format` as RGBA (missing colour components 0, alpha 1).
 void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4]);

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/run.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
 #include "gl/src/pixels.hpp"
@@ -279,6 +281,24 @@ void exec::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internal_f
   if (level == 0) t.texture.format = base;
 }
 
+// In a display list, the image is kept as the unpack state of the moment reads it (GL 1.1
+// section 5.4), tightly packed; proxy textures are queries, executed at once and not
+// compiled (as in Mesa). An image the command will reject is not read.
+void save::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internal_format, GLsizei width,
+                      GLsizei height, GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (target == GL_PROXY_TEXTURE_2D) {
+    if (c.lists.mode == GL_COMPILE) run::TexImage2D(c, target, level, internal_format, width, height, border, format, type, pixels);
+    return;
+  }
+  const int components = color_format_components(format), size = pixel_type_size(type);
+  const bool readable = pixels && components > 0 && size > 0 && width >= 0 && height >= 0 &&
+                        width <= kMaxTextureSize + 2 && height <= kMaxTextureSize + 2;
+  std::vector<unsigned char> image;
+  if (readable) image = copy_image(c.unpack, width, height, components, size, pixels);
+  record::TexImage2D(c, target, level, internal_format, width, height, border, format, type,
+                     readable ? image.data() : nullptr, image.size());
+}
+
 void exec::TexParameterf(GlContext& c, GLenum target, GLenum pname, GLfloat param) {
   tex_parameter(c, target, pname, &param, 1);
 }
@@ -316,6 +336,13 @@ void exec::TexEnviv(GlContext& c, GLenum target, GLenum pname, const GLint* para
   if (params) to_floats(params, n, pname == GL_TEXTURE_ENV_COLOR, v);
   tex_env(c, target, pname, params ? v : nullptr, n);
 }
+// How many values the vector forms read, for their display-list savers: the first value
+// even for a pname they reject (tex_parameter reads it before it looks at the pname).
+std::size_t save_count::TexParameterfv(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
+std::size_t save_count::TexParameteriv(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
+std::size_t save_count::TexEnvfv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
+std::size_t save_count::TexEnviv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
+
 void exec::GetTexEnvfv(GlContext& c, GLenum target, GLenum pname, GLfloat* params) { get_tex_env(c, target, pname, params); }
 void exec::GetTexEnviv(GlContext& c, GLenum target, GLenum pname, GLint* params) { get_tex_env(c, target, pname, params); }
 
