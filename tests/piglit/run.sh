@@ -13,7 +13,8 @@
 # report then also shows what the tests of the next version's group already do).
 #
 # --ci runs only the fixed list tests/piglit/ci-pass.txt (tests that pass on llvmpipe and on
-# shadelab today, under a second each) on shadelab, and fails unless every one passes: the ctest
+# shadelab today, under a second each; those of the groups the reported version selects) on
+# shadelab, and fails unless every one passes: the ctest
 # `piglit.ci`. Exit status otherwise: 0 (the report is the output), 2 for bad arguments or a
 # missing tool.
 set -euo pipefail
@@ -60,17 +61,25 @@ fi
 select=(-t "spec@!opengl 1\\.[0-$minor]@" -x glsl -x shader)
 mkdir -p "$out"
 
+# --ci: the listed tests of those groups (a test of a newer group cannot run: piglit refuses the
+# functions of a version above the reported one; GL_VERSION says 1.0 while a GL 1.1 command is
+# still pending in the GL front end, gl/api/pending.txt).
+ci_list="$out/ci-pass.txt"
+if [ $ci = 1 ]; then
+  grep -E "^spec@!opengl 1\.[0-$minor]@" "$here/ci-pass.txt" >"$ci_list" || true
+fi
+
 run_piglit() {  # NAME ENV...: results in $out/NAME
   local name=$1
   shift
   local list=()
-  [ $ci = 1 ] && list=(--test-list "$here/ci-pass.txt")
+  [ $ci = 1 ] && list=(--test-list "$ci_list")
   "$@" PIGLIT_PLATFORM=glx piglit run quick_gl "${select[@]}" "${list[@]}" -p glx --timeout "$timeout" \
     -l dummy -o -n "$name" "$out/$name" >"$out/$name.log" 2>&1 || true
 }
 
 echo "piglit: OpenGL $version reported by shadelab: groups !opengl 1.0 to 1.$minor, without GLSL"
-[ $ci = 1 ] && echo "piglit: only the tests of $here/ci-pass.txt"
+[ $ci = 1 ] && echo "piglit: only the tests of $here/ci-pass.txt in those groups ($(wc -l <"$ci_list") of $(grep -c '^spec@' "$here/ci-pass.txt"))"
 start=$SECONDS
 run_piglit shadelab "${shadelab_env[@]}"
 echo "piglit: shadelab ran in $((SECONDS - start)) s"
@@ -81,5 +90,5 @@ if [ $shadelab_only = 0 ]; then
 fi
 args=(--out "$out" --version "$version" --up-to "1.$minor")
 [ $shadelab_only = 1 ] && args+=(--shadelab-only)
-[ $ci = 1 ] && args+=(--require-pass "$here/ci-pass.txt")
+[ $ci = 1 ] && args+=(--require-pass "$ci_list")
 python3 "$here/summary.py" "${args[@]}" | tee "$out/summary.txt"
