@@ -32,8 +32,9 @@ sanitized_build() {  # DIR FLAGS [TARGET...]
 
 echo "test: AddressSanitizer + UndefinedBehaviorSanitizer"
 sanitized_build build-asan "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-# Leaks inside Mesa's libraries (the conformance reference) are suppressed; nothing of ours.
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1"
+# Leaks inside Mesa's libraries and reports from interceptors Mesa calls (the conformance
+# reference) are suppressed; nothing of ours.
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:suppressions=$PWD/tests/sanitizers/asan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
