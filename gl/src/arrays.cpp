@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <mutex>
+#include <type_traits>
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
@@ -33,22 +35,40 @@ T load(const unsigned char* p) {
   return v;
 }
 
-// Component k of element i. `normalized`: integers map to [0, 1] (unsigned) or [-1, 1]
-// (signed) as colours and normals do (GL 1.1 table 2.6); otherwise they convert directly.
-double component(const ClientArray& a, std::size_t i, int k, bool normalized) {
+// How integer components become floats. kDirect: as they are (positions, texture
+// coordinates). kSpec: GL 1.1 table 2.6, as glArrayElement converts them (Mesa issues the
+// immediate-mode calls, glColor3b and so on). kDraw: as llvmpipe's vertex fetch converts them
+// for glDrawArrays / glDrawElements (Mesa hands the arrays over as normalized formats: signed
+// c / (2^(b-1) - 1), at least -1; unsigned c / (2^b - 1)). The two differ by at most one
+// step of the type.
+enum class Norm { kDirect, kSpec, kDraw };
+
+template <class T>
+float convert_component(T v, Norm norm) {
+  if (norm == Norm::kDirect) return float(v);
+  if (norm == Norm::kSpec) return color_component(v);
+  if constexpr (std::is_signed_v<T>) {
+    return std::max(-1.0f, float(double(v) / double(std::numeric_limits<T>::max())));
+  } else {
+    return float(double(v) / double(std::numeric_limits<T>::max()));
+  }
+}
+
+// Component k of element i.
+float component(const ClientArray& a, std::size_t i, int k, Norm norm) {
   std::size_t size = std::size_t(type_size(a.type));
   std::size_t stride = a.stride ? std::size_t(a.stride) : size * std::size_t(a.size);
   const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + i * stride + std::size_t(k) * size;
   switch (a.type) {
-    case GL_BYTE: { double v = load<GLbyte>(p); return normalized ? (2 * v + 1) / 255.0 : v; }
-    case GL_UNSIGNED_BYTE: { double v = load<GLubyte>(p); return normalized ? v / 255.0 : v; }
-    case GL_SHORT: { double v = load<GLshort>(p); return normalized ? (2 * v + 1) / 65535.0 : v; }
-    case GL_UNSIGNED_SHORT: { double v = load<GLushort>(p); return normalized ? v / 65535.0 : v; }
-    case GL_INT: { double v = load<GLint>(p); return normalized ? (2 * v + 1) / 4294967295.0 : v; }
-    case GL_UNSIGNED_INT: { double v = load<GLuint>(p); return normalized ? v / 4294967295.0 : v; }
+    case GL_BYTE: return convert_component(load<GLbyte>(p), norm);
+    case GL_UNSIGNED_BYTE: return convert_component(load<GLubyte>(p), norm);
+    case GL_SHORT: return convert_component(load<GLshort>(p), norm);
+    case GL_UNSIGNED_SHORT: return convert_component(load<GLushort>(p), norm);
+    case GL_INT: return convert_component(load<GLint>(p), norm);
+    case GL_UNSIGNED_INT: return convert_component(load<GLuint>(p), norm);
     case GL_FLOAT: return load<GLfloat>(p);
-    case GL_DOUBLE: return load<GLdouble>(p);
-    default: return 0.0;
+    case GL_DOUBLE: return float(load<GLdouble>(p));
+    default: return 0.0f;
   }
 }
 
@@ -67,33 +87,36 @@ const float* floats3(const ClientArray& a, std::size_t i) {
 }
 
 // Up to four components of element i, the missing ones taken from `fill`.
-glm::vec4 fetch(const ClientArray& a, std::size_t i, glm::vec4 fill, bool normalized) {
+glm::vec4 fetch(const ClientArray& a, std::size_t i, glm::vec4 fill, Norm norm) {
   if (a.type == GL_FLOAT) {  // the common case, read directly
     std::size_t stride = a.stride ? std::size_t(a.stride) : sizeof(float) * std::size_t(a.size);
     const unsigned char* p = static_cast<const unsigned char*>(a.pointer) + i * stride;
     for (int k = 0; k < a.size && k < 4; ++k) std::memcpy(&fill[k], p + sizeof(float) * std::size_t(k), sizeof(float));
     return fill;
   }
-  for (int k = 0; k < a.size && k < 4; ++k) fill[k] = float(component(a, i, k, normalized));
+  for (int k = 0; k < a.size && k < 4; ++k) fill[k] = component(a, i, k, norm);
   return fill;
 }
 
-// glArrayElement's effect (GL 1.1 section 2.8): attributes first, the vertex last.
-void array_element(GlContext& c, std::size_t i) {
+// glArrayElement's effect (GL 1.1 section 2.8): attributes first, the vertex last. `norm`:
+// how colours and normals convert (kSpec for glArrayElement itself, kDraw within a draw).
+void array_element(GlContext& c, std::size_t i, Norm norm) {
   const ClientArrays& a = c.arrays;
-  if (usable(a.normal)) c.current.normal = glm::vec3(fetch(a.normal, i, glm::vec4(0.0f), true));
+  if (usable(a.edge_flag)) c.current.edge_flag = component(a.edge_flag, i, 0, Norm::kDirect);
+  if (usable(a.index)) c.current.index = component(a.index, i, 0, Norm::kDirect);
+  if (usable(a.normal)) c.current.normal = glm::vec3(fetch(a.normal, i, glm::vec4(0.0f), norm));
   if (usable(a.color)) {
-    c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), true);
+    c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), norm);
     apply_color_material(c);
   }
-  if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false);
-  if (usable(a.vertex) && c.prim.active) emit_vertex(c, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false));
+  if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect);
+  if (usable(a.vertex) && c.prim.active) emit_vertex(c, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect));
 }
 
 // A whole primitive from array elements. The current attributes and material are restored
 // afterwards: GL leaves them indeterminate, and Mesa leaves them unchanged.
 template <class IndexOf>
-void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of,
+void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of, bool from_elements,
                    const std::uint32_t* direct = nullptr) {
   if (!usable(c.arrays.vertex)) return;
   const ClientArrays& a = c.arrays;
@@ -106,7 +129,7 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
       std::size_t step = float_stride(a.vertex);
       for (std::size_t v = 0; v < n; ++v, f += step) positions[v] = glm::vec4(f[0], f[1], f[2], 1.0f);
     } else {
-      for (std::size_t v = 0; v < n; ++v) positions[v] = fetch(a.vertex, first + v, glm::vec4(0, 0, 0, 1), false);
+      for (std::size_t v = 0; v < n; ++v) positions[v] = fetch(a.vertex, first + v, glm::vec4(0, 0, 0, 1), Norm::kDirect);
     }
     if (usable(a.normal) && a.normal.type == GL_FLOAT && aligned_floats(a.normal)) {
       const float* f = floats3(a.normal, first);
@@ -114,15 +137,15 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
       for (std::size_t v = 0; v < n; ++v, f += step) normals[v] = glm::vec3(f[0], f[1], f[2]);
     } else {
       for (std::size_t v = 0; v < n; ++v) {
-        normals[v] = usable(a.normal) ? glm::vec3(fetch(a.normal, first + v, glm::vec4(0.0f), true)) : now.normal;
+        normals[v] = usable(a.normal) ? glm::vec3(fetch(a.normal, first + v, glm::vec4(0.0f), Norm::kDraw)) : now.normal;
       }
     }
     for (std::size_t v = 0; colors && v < n; ++v) {
-      colors[v] = usable(a.color) ? fetch(a.color, first + v, glm::vec4(0, 0, 0, 1), true) : now.color;
+      colors[v] = usable(a.color) ? fetch(a.color, first + v, glm::vec4(0, 0, 0, 1), Norm::kDraw) : now.color;
     }
     if (!texcoords) return;
     for (std::size_t v = 0; v < n; ++v) {
-      texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), false) : now.texcoord;
+      texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), Norm::kDirect) : now.texcoord;
     }
   };
   auto& sequence = c.array_scratch.sequence;
@@ -148,11 +171,12 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   make_pipeline(c);
   if (c.pipeline && count >= (1u << 16)) c.pipeline->parallel_for(count, 1u << 15, gather);
   else gather(0, count);
-  if (draw_array_mesh(c, mode, usable(a.color), count, read_direct ? direct : nullptr, lo, hi, load)) return;
+  if (draw_array_mesh(c, mode, usable(a.color), from_elements, count, read_direct ? direct : nullptr, lo, hi, load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);
-  for (std::size_t k = 0; k < count; ++k) array_element(c, index_of(k));
+  c.prim.from_elements = from_elements;
+  for (std::size_t k = 0; k < count; ++k) array_element(c, index_of(k), Norm::kDraw);
   end_primitive(c);
   c.current = saved;
   c.lighting.front = front, c.lighting.back = back;
@@ -165,16 +189,19 @@ bool valid_type(GLenum type, std::initializer_list<GLenum> allowed) {
   return false;
 }
 
+// The gl*Pointer rule, checked in Mesa's order: the stride, then the type, then the size.
 void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
                  int min_size, int max_size, std::initializer_list<GLenum> types) {
-  if (size < min_size || size > max_size || stride < 0) return c.set_error(GL_INVALID_VALUE);
+  if (stride < 0) return c.set_error(GL_INVALID_VALUE);
   if (!valid_type(type, types)) return c.set_error(GL_INVALID_ENUM);
+  if (size < min_size || size > max_size) return c.set_error(GL_INVALID_VALUE);
   a = {a.enabled, size, type, stride, ptr};
 }
 
 // Array elements dereferenced for a display list: per element, the attributes
-// glArrayElement would set (GL 1.1 section 2.8), each array null when it is disabled.
-void write_elements(GlContext& c, ListWriter& w, std::size_t count, const auto& index_of) {
+// glArrayElement would set (GL 1.1 section 2.8), each array null when it is disabled; colours
+// and normals converted as `norm` says (as the command being recorded converts them).
+void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, const auto& index_of) {
   const ClientArrays& a = c.arrays;
   std::vector<float> normals, colors, texcoords, positions;
   auto put = [](std::vector<float>& out, const glm::vec4& v, int n) {
@@ -182,10 +209,10 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, const auto& 
   };
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = index_of(k);
-    if (usable(a.normal)) put(normals, fetch(a.normal, i, glm::vec4(0.0f), true), 3);
-    if (usable(a.color)) put(colors, fetch(a.color, i, glm::vec4(0, 0, 0, 1), true), 4);
-    if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), false), 4);
-    if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), false), 4);
+    if (usable(a.normal)) put(normals, fetch(a.normal, i, glm::vec4(0.0f), norm), 3);
+    if (usable(a.color)) put(colors, fetch(a.color, i, glm::vec4(0, 0, 0, 1), norm), 4);
+    if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
+    if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
   }
   w.scalar(std::uint64_t(count));
   w.array(usable(a.normal) ? normals.data() : nullptr, normals.size());
@@ -200,7 +227,7 @@ void record_draw(GlContext& c, GLenum mode, std::size_t count, const auto& index
   if (!usable(c.arrays.vertex)) return;
   ListWriter w(c, Opcode::kArrayDraw);
   w.scalar(mode);
-  write_elements(c, w, count, index_of);
+  write_elements(c, w, count, Norm::kDraw, index_of);
 }
 
 // Recorded elements, read back.
@@ -256,7 +283,7 @@ void replay_internal::ArrayDraw(GlContext& c, ListReader& r) {
 void save::ArrayElement(GlContext& c, GLint i) {
   if (i < 0) return record_error(c, GL_INVALID_VALUE);
   ListWriter w(c, Opcode::kArrayElements);
-  write_elements(c, w, 1, [&](std::size_t) { return std::size_t(i); });
+  write_elements(c, w, 1, Norm::kSpec, [&](std::size_t) { return std::size_t(i); });
 }
 
 void save::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
@@ -298,16 +325,24 @@ void exec::TexCoordPointer(GlContext& c, GLint size, GLenum type, GLsizei stride
   set_pointer(c, c.arrays.texcoord, size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
+void exec::IndexPointer(GlContext& c, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.index, 1, type, stride, ptr, 1, 1, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+void exec::EdgeFlagPointer(GlContext& c, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.edge_flag, 1, GL_UNSIGNED_BYTE, stride, ptr, 1, 1, {GL_UNSIGNED_BYTE});
+}
+
 // Legal between glBegin and glEnd; outside them it only sets the current attributes.
 void exec::ArrayElement(GlContext& c, GLint i) {
   if (i < 0) return c.set_error(GL_INVALID_VALUE);
-  array_element(c, std::size_t(i));
+  array_element(c, std::size_t(i), Norm::kSpec);
 }
 
 void exec::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
   if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
   if (first < 0 || count < 0) return c.set_error(GL_INVALID_VALUE);
-  draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
+  draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; }, false);
 }
 
 // Indices are used as given: like GL, shadelab cannot know how long the caller's arrays are.
@@ -328,7 +363,7 @@ void exec::DrawElements(GlContext& c, GLenum mode, GLsizei count, GLenum type, c
         if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
         return load<GLuint>(bytes + 4 * k);
       },
-      aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
+      true, aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
 }
 
 }  // namespace shadelab::gl

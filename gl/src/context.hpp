@@ -67,6 +67,8 @@ struct CurrentAttribs {
   glm::vec4 color{1.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
+  float index = 1.0f;      // GL_CURRENT_INDEX: kept, colours nothing in an RGBA context
+  float edge_flag = 1.0f;  // GL_EDGE_FLAG as given (GL_TRUE only when exactly 1, as Mesa's)
 };
 
 /// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
@@ -82,6 +84,9 @@ struct RasterState {
   GLenum cull_mode = GL_BACK;
   GLenum front_face = GL_CCW;
   std::array<bool, 4> color_mask{true, true, true, true};
+  // glClearIndex and glIndexMask (GL 1.1 sections 4.2.3, 4.2.2): kept and reported; they
+  // apply to colour-index buffers only.
+  GLuint clear_index = 0, index_mask = ~0u;
   bool stencil_test = false;
   GLenum stencil_func = GL_ALWAYS;
   GLint stencil_ref = 0;
@@ -100,6 +105,7 @@ struct RasterState {
 struct InertCaps {
   bool point_smooth = false, line_smooth = false, line_stipple = false;
   bool offset_point = false, offset_line = false;
+  bool polygon_smooth = false;  // llvmpipe draws polygons unsmoothed whatever it says
 };
 
 struct TextureObject {
@@ -141,7 +147,8 @@ struct ClientArray {
 
 struct ClientArrays {
   ClientArray vertex, normal{false, 3}, color, texcoord;
-  bool index_enabled = false, edge_flag_enabled = false;  // accepted, unused
+  ClientArray index{false, 1};                        // colour indices: current index only
+  ClientArray edge_flag{false, 1, GL_UNSIGNED_BYTE};  // GLboolean elements
 };
 
 /// One vertex of a primitive being specified: its eye-space position, normal and texture
@@ -170,6 +177,9 @@ struct Primitive {
   // Begun by a display list being executed: llvmpipe then splits quads from their second
   // vertex (docs/gl-conformance.md).
   bool in_list = false;
+  // Drawn by glDrawElements: llvmpipe then splits quads from their second vertex
+  // (docs/gl-conformance.md).
+  bool from_elements = false;
   // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
   // at glBegin. A material change inside the primitive lights the vertices so far and ends
   // the deferral (settle_lighting).

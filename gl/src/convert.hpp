@@ -50,4 +50,18 @@ inline float finite_or_zero(float v) { return std::isnan(v) ? 0.0f : v; }
 /// Unsigned byte colour component to [0, 1].
 inline float ubyte_to_float(GLubyte v) { return float(v) / 255.0f; }
 
+/// Integer components of glColor and glNormal to floats (GL 1.1 table 2.6), evaluated in the
+/// precision Mesa evaluates them, so that glGet returns the same floats: signed types map
+/// (2c + 1) / (2^b - 1), unsigned ones c / (2^b - 1). Mesa's signed 32-bit form divides by
+/// 2^32 - 2, not 2^32 - 1; the difference is below a float's precision for every GLint but
+/// changes how the division rounds, so it is kept.
+inline float color_component(GLbyte v) { return (2.0f * float(v) + 1.0f) * (1.0f / 255.0f); }
+inline float color_component(GLshort v) { return (2.0f * float(v) + 1.0f) * (1.0f / 65535.0f); }
+inline float color_component(GLint v) { return float(double(2.0f * float(v) + 1.0f) * (1.0 / 4294967294.0)); }
+inline float color_component(GLubyte v) { return ubyte_to_float(v); }
+inline float color_component(GLushort v) { return float(v) * (1.0f / 65535.0f); }
+inline float color_component(GLuint v) { return float(double(v) * (1.0 / 4294967295.0)); }
+inline float color_component(GLfloat v) { return v; }
+inline float color_component(GLdouble v) { return float(v); }
+
 }  // namespace shadelab::gl

@@ -314,7 +314,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   }
   std::vector<PrimitiveTriangle>& tris = c.immediate_scratch.pieces;
   tris.clear();
-  const bool second = outside || p.in_list;
+  const bool second = outside || p.in_list || p.from_elements;
   decompose(p.mode, count, p.odd_strip_start, second ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
   if (tris.empty()) return;
   bool flat = c.lighting.shade_model == GL_FLAT;
@@ -390,7 +390,7 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 
 }  // namespace
 
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size_t count,
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from_elements, std::size_t count,
                      const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
                      const ElementLoader& load) {
   const LightingState& l = c.lighting;
@@ -444,7 +444,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size
   // vertex by vertex (nothing is drawn yet).
   if (homogeneous && l.enabled) return false;
   if (!l.enabled) m.normals.clear();
-  QuadSplit split = QuadSplit::kFromFirst;
+  QuadSplit split = from_elements ? QuadSplit::kFromSecond : QuadSplit::kFromFirst;
   if (mode == GL_QUADS) {
     for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {
       glm::vec4 v = projection * m.positions[m.sequence[k] - lo];
@@ -526,6 +526,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.colors.clear();
   p.odd_strip_start = false;
   p.in_list = c.lists.depth > 0;
+  p.from_elements = false;
   p.modelview = c.modelview.top();
   glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
   p.normal_matrix = glm::transpose(inv);

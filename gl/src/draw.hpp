@@ -56,8 +56,9 @@ class ElementLoader {
 /// the smallest and largest; each element in that range is loaded and transformed once and
 /// lit by the pipeline, not once per index. False, with nothing drawn, when the draw must go
 /// vertex by vertex instead (flat quads or polygons, colour material with a colour array,
-/// sparse indices, w != 1).
-bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, std::size_t count,
+/// sparse indices, w != 1). `from_elements`: a glDrawElements draw, whose quads llvmpipe splits
+/// from their second vertex.
+bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from_elements, std::size_t count,
                      const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
                      const ElementLoader& load);
 

@@ -71,6 +71,9 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_TEXTURE_COORD_ARRAY_SIZE: out = array_state(a.texcoord, true); return true;
     case GL_TEXTURE_COORD_ARRAY_TYPE: out = ints({double(a.texcoord.type)}); return true;
     case GL_TEXTURE_COORD_ARRAY_STRIDE: out = ints({double(a.texcoord.stride)}); return true;
+    case GL_INDEX_ARRAY_TYPE: out = ints({double(a.index.type)}); return true;
+    case GL_INDEX_ARRAY_STRIDE: out = ints({double(a.index.stride)}); return true;
+    case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(a.edge_flag.stride)}); return true;
     default: break;
   }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
@@ -92,6 +95,8 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.color), 4); return true;
     case GL_CURRENT_NORMAL: out = vec(Kind::kColor, glm::value_ptr(c.current.normal), 3); return true;
     case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
+    case GL_CURRENT_INDEX: out = make(Kind::kFloat, {c.current.index}); return true;
+    case GL_EDGE_FLAG: out = make(Kind::kBool, {double(c.current.edge_flag == 1.0f)}); return true;
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
     case GL_TEXTURE_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.texture_matrix.top()), 16); return true;
@@ -148,6 +153,10 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
     case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = ints({double(c.double_buffered ? GL_BACK : GL_FRONT)}); return true;
     case GL_RENDER_MODE: out = ints({GL_RENDER}); return true;
+    // Colour-index state, kept in an RGBA context as Mesa keeps it.
+    case GL_INDEX_CLEAR_VALUE: out = ints({double(r.clear_index)}); return true;
+    case GL_INDEX_WRITEMASK: out = ints({double(GLint(r.index_mask))}); return true;
+    case GL_CURRENT_RASTER_INDEX: out = ints({1}); return true;
     default: return false;
   }
 }
@@ -207,6 +216,22 @@ void exec::GetBooleanv(GlContext& c, GLenum pname, GLboolean* params) { get(c, p
 void exec::GetIntegerv(GlContext& c, GLenum pname, GLint* params) { get(c, pname, params); }
 void exec::GetFloatv(GlContext& c, GLenum pname, GLfloat* params) { get(c, pname, params); }
 void exec::GetDoublev(GlContext& c, GLenum pname, GLdouble* params) { get(c, pname, params); }
+
+// glGetPointerv (GL 1.1 section 6.1.11): a null `params` is ignored, as Mesa does.
+void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
+  const ClientArrays& a = c.arrays;
+  const void* p = nullptr;
+  switch (pname) {
+    case GL_VERTEX_ARRAY_POINTER: p = a.vertex.pointer; break;
+    case GL_NORMAL_ARRAY_POINTER: p = a.normal.pointer; break;
+    case GL_COLOR_ARRAY_POINTER: p = a.color.pointer; break;
+    case GL_INDEX_ARRAY_POINTER: p = a.index.pointer; break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
+    case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
+    default: return c.set_error(GL_INVALID_ENUM);
+  }
+  if (params) *params = const_cast<void*>(p);
+}
 
 // GL_VERSION is that of the newest OpenGL version whose every command is implemented
 // (gl/api/pending.txt; SHADELAB_GL_VERSION_NUMBER is generated from it).

@@ -27,6 +27,7 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_LINE_STIPPLE: return &c.inert.line_stipple;
     case GL_POLYGON_OFFSET_POINT: return &c.inert.offset_point;
     case GL_POLYGON_OFFSET_LINE: return &c.inert.offset_line;
+    case GL_POLYGON_SMOOTH: return &c.inert.polygon_smooth;
     default: return nullptr;
   }
 }
@@ -37,8 +38,8 @@ bool* client_capability_flag(GlContext& c, GLenum cap) {
     case GL_NORMAL_ARRAY: return &c.arrays.normal.enabled;
     case GL_COLOR_ARRAY: return &c.arrays.color.enabled;
     case GL_TEXTURE_COORD_ARRAY: return &c.arrays.texcoord.enabled;
-    case GL_INDEX_ARRAY: return &c.arrays.index_enabled;
-    case GL_EDGE_FLAG_ARRAY: return &c.arrays.edge_flag_enabled;
+    case GL_INDEX_ARRAY: return &c.arrays.index.enabled;
+    case GL_EDGE_FLAG_ARRAY: return &c.arrays.edge_flag.enabled;
     default: return nullptr;
   }
 }

@@ -3,11 +3,14 @@
 # NAME.shadelab.png and, on failure, NAME.diff.png.
 #
 #   cmake -DNAME=... -DOUT_DIR=... -DMESA_EXE=... [-DSHADELAB_EXE=...] -DCOMPARE=...
-#         [-DSELFCHECK=ON] -P run_conformance.cmake
+#         [-DSELFCHECK=ON] [-DVALUES=ON -DVALUES_COMPARE=... [-DVALUES_REL=R]]
+#         -P run_conformance.cmake
 #
 # With SHADELAB_EXE empty (libshadelab-gl not built yet) only Mesa's build runs and its image is
 # checked not to be blank. With SELFCHECK=ON Mesa's softpipe driver is compared with llvmpipe
-# (NAME.selfcheck-*.png).
+# (NAME.selfcheck-*.png). With VALUES=ON the program also writes NAME.mesa.txt and
+# NAME.shadelab.txt (a value per line), compared one by one by VALUES_COMPARE (gl_values)
+# within the relative tolerance VALUES_REL (0: equal).
 file(MAKE_DIRECTORY ${OUT_DIR})
 
 function(run_step what)
@@ -32,7 +35,7 @@ if(SELFCHECK)  # own file names: may run beside the conformance test of the same
 endif()
 
 set(mesa_png ${OUT_DIR}/${NAME}.mesa.png)
-file(REMOVE ${mesa_png})
+file(REMOVE ${mesa_png} ${OUT_DIR}/${NAME}.mesa.txt ${OUT_DIR}/${NAME}.shadelab.txt)
 run_step("Mesa's build (${MESA_EXE})" ${MESA_EXE} ${mesa_png})
 
 
@@ -47,5 +50,16 @@ set(shadelab_png ${OUT_DIR}/${NAME}.shadelab.png)
 set(diff_png ${OUT_DIR}/${NAME}.diff.png)
 file(REMOVE ${shadelab_png} ${diff_png})
 run_step("shadelab-gl's build (${SHADELAB_EXE})" ${SHADELAB_EXE} ${shadelab_png})
+if(VALUES)
+  if(NOT VALUES_REL)
+    set(VALUES_REL 0)
+  endif()
+  execute_process(COMMAND ${VALUES_COMPARE} ${OUT_DIR}/${NAME}.mesa.txt
+                          ${OUT_DIR}/${NAME}.shadelab.txt --name ${NAME} --rel ${VALUES_REL}
+                  RESULT_VARIABLE values_rc)
+endif()
 run_step("comparison with Mesa" ${COMPARE} ${mesa_png} ${shadelab_png} --name ${NAME}
          --diff ${diff_png})
+if(VALUES AND NOT values_rc EQUAL 0)
+  message(FATAL_ERROR "${NAME}: the values differ from Mesa's (gl_values above)")
+endif()

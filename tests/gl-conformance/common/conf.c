@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include <stb_image_write.h>
 
@@ -40,6 +41,40 @@ int conf_check_error(const char* where) {
   while (glGetError() != GL_NO_ERROR) {
   }
   return 1;
+}
+
+FILE* conf_open_values(const ConfContext* c) {
+  size_t n = strlen(c->out_path);
+  char* path = (char*)malloc(n + 5);
+  if (!path) return NULL;
+  strcpy(path, c->out_path);
+  if (n >= 4 && strcmp(path + n - 4, ".png") == 0) path[n - 4] = '\0';
+  strcat(path, ".txt");
+  FILE* f = fopen(path, "w");
+  if (!f) fprintf(stderr, "cannot write %s\n", path);
+  free(path);
+  return f;
+}
+
+void conf_value_cells(const ConfContext* c, const unsigned* values, int n, int cols, int rows) {
+  glViewport(0, 0, c->width, c->height);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, cols, rows, 0, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glDisable(GL_LIGHTING);
+  glDisable(GL_TEXTURE_2D);
+  for (int i = 0; i < n && i < cols * rows; ++i) {
+    /* 9 bits of a hash of the value, 3 per channel, each step 33/255 apart. */
+    unsigned v = values[i] * 2654435761u, h = (v ^ (v >> 9) ^ (v >> 18) ^ (v >> 27)) & 511u;
+    glColor3ub((GLubyte)(20 + 33 * (h & 7)), (GLubyte)(20 + 33 * ((h >> 3) & 7)), (GLubyte)(20 + 33 * (h >> 6)));
+    float x = (float)(i % cols), y = (float)(i / cols);
+    glBegin(GL_TRIANGLES);
+    glVertex2f(x + 0.1f, y + 0.1f), glVertex2f(x + 0.9f, y + 0.1f), glVertex2f(x + 0.9f, y + 0.9f);
+    glVertex2f(x + 0.1f, y + 0.1f), glVertex2f(x + 0.9f, y + 0.9f), glVertex2f(x + 0.1f, y + 0.9f);
+    glEnd();
+  }
 }
 
 int conf_write_png(const char* path, const unsigned char* rgba, int width, int height) {

@@ -7,6 +7,7 @@
 
 #include <GL/gl.h>
 #include <GL/osmesa.h>
+#include <stdio.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -36,6 +37,16 @@ int conf_write_png(const char* path, const unsigned char* rgba, int width, int h
 /* Sets the viewport to cell (col, row) of an ncols x nrows grid over the whole buffer;
  * row 0 is the top row. Cell sizes are width / ncols and height / nrows (integer division). */
 void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows);
+
+/* Opens the text file beside the output PNG (its path with ".png" replaced by ".txt") for a
+ * program whose values are compared with Mesa's one by one (tools/gl_values.cpp: a line per
+ * value, "label: tokens"). NULL (and a message) on failure. */
+FILE* conf_open_values(const ConfContext* c);
+
+/* Draws values[0..n) as cells of a cols x rows grid over the whole buffer, each coloured by a
+ * hash of its value (so that a different value shows in the image too); sets the viewport,
+ * both matrices and unlit drawing. */
+void conf_value_cells(const ConfContext* c, const unsigned* values, int n, int cols, int rows);
 
 /* Reports an unexpected GL error (and where) on stderr; returns 1 if there was one. */
 int conf_check_error(const char* where);
