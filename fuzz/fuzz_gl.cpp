@@ -130,7 +130,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 45) {
+    switch (in.byte() % 46) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -236,6 +236,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
           default: glListBase(GLuint(in.small(-2, 4))); break;
         }
         break;
+      case 45: {  // the attribute stacks: any mask, pushed past their depth
+        const GLbitfield mask = in.byte() % 4 ? GLbitfield(1) << (in.byte() % 32) : GL_ALL_ATTRIB_BITS;
+        switch (in.byte() % 4) {
+          case 0: glPushAttrib(mask); break;
+          case 1: glPopAttrib(); break;
+          case 2: glPushClientAttrib(mask); break;
+          default: glPopClientAttrib(); break;
+        }
+        break;
+      }
       case 39: {
         glFinish();
         GLint w, h, bytes;

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -256,6 +257,48 @@ struct TileMap {
 /// the changed pixels were presented into its image: a single-buffered window shows them
 /// then) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
 /// viewport when resized). OSMesa buffers have none.
+/// One glPushAttrib entry (GL 1.1 section 6.1.14): the mask and a copy of the structs that
+/// hold the attribute groups' state, whatever the mask (pushes are rare); glPopAttrib
+/// (attrib.cpp) restores the groups the mask names, in Mesa's order.
+///
+/// NEW STATE MUST JOIN ITS ATTRIBUTE GROUP. Whoever adds server state to GlContext (a member
+/// here or a field of the structs below) looks up its group in the "Attribute" column of GL
+/// 1.1's state tables (chapter 6, tables 6.5-6.25) and makes attrib.cpp's restore of that
+/// group (restore_current, restore_color_buffer, ...) copy it back; a struct not copied here
+/// yet is added as a member. Capabilities need nothing more: the enable group goes through
+/// capability_flag and exec::Enable for every GL 1.1 capability (attrib.cpp's kCapabilities).
+/// Client state (pixel store, vertex arrays) goes the same way through ClientAttribRecord.
+struct AttribRecord {
+  GLbitfield mask = 0;
+  CurrentAttribs current;
+  LightingState lighting;
+  RasterState raster;
+  InertCaps inert;
+  TextureState textures;  // environment; the bindings are restored through exec::BindTexture
+  std::vector<std::pair<GLenum, bool>> enables;  // every accepted capability
+  // Per texture target: the bound name and the parameters of the bound and default objects.
+  struct TextureTarget {
+    GLenum target = 0;
+    GLuint name = 0;
+    std::array<float, 9> bound{}, defaults{};
+  };
+  std::vector<TextureTarget> texture_targets;
+  std::array<GLenum, 5> hints{};
+  GLenum matrix_mode = GL_MODELVIEW;
+  GLuint list_base = 0;
+};
+
+/// One glPushClientAttrib entry (GL 1.1 section 6.1.14).
+struct ClientAttribRecord {
+  GLbitfield mask = 0;
+  PixelStore pack, unpack;
+  ClientArrays arrays;
+};
+
+/// GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH (Mesa's).
+inline constexpr int kMaxAttribStackDepth = 16;
+inline constexpr int kMaxClientAttribStackDepth = 16;
+
 class SurfaceHooks {
  public:
   virtual void flushed(struct GlContext& c) = 0;
@@ -279,6 +322,8 @@ struct GlContext {
   PixelStore pack, unpack;
   ClientArrays arrays;
   ListState lists;
+  std::vector<AttribRecord> attrib_stack;              // glPushAttrib
+  std::vector<ClientAttribRecord> client_attrib_stack;  // glPushClientAttrib
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;

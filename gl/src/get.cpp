@@ -103,6 +103,8 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_MODELVIEW_STACK_DEPTH: out = ints({double(c.modelview.entries.size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: out = ints({double(c.projection.entries.size())}); return true;
     case GL_TEXTURE_STACK_DEPTH: out = ints({double(c.texture_matrix.entries.size())}); return true;
+    case GL_ATTRIB_STACK_DEPTH: out = ints({double(c.attrib_stack.size())}); return true;
+    case GL_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(c.client_attrib_stack.size())}); return true;
     case GL_MATRIX_MODE: out = ints({double(c.matrix_mode)}); return true;
     case GL_VIEWPORT: out = ints({double(vp.x), double(vp.y), double(vp.width), double(vp.height)}); return true;
     case GL_DEPTH_RANGE: out = make(Kind::kColor, {vp.near_depth, vp.far_depth}); return true;
@@ -167,6 +169,8 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_MAX_MODELVIEW_STACK_DEPTH: out = ints({kMaxModelviewDepth}); return true;
     case GL_MAX_PROJECTION_STACK_DEPTH: out = ints({kMaxProjectionDepth}); return true;
     case GL_MAX_TEXTURE_STACK_DEPTH: out = ints({kMaxTextureStackDepth}); return true;
+    case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({kMaxAttribStackDepth}); return true;
+    case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({kMaxClientAttribStackDepth}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_SUBPIXEL_BITS: out = ints({8}); return true;

@@ -57,9 +57,6 @@ static const GLenum kNotYet[] = {
   /* selection and feedback */
   GL_FEEDBACK_BUFFER_SIZE, GL_FEEDBACK_BUFFER_TYPE, GL_SELECTION_BUFFER_SIZE,
   GL_NAME_STACK_DEPTH, GL_MAX_NAME_STACK_DEPTH,
-  /* attribute stacks */
-  GL_ATTRIB_STACK_DEPTH, GL_CLIENT_ATTRIB_STACK_DEPTH, GL_MAX_ATTRIB_STACK_DEPTH,
-  GL_MAX_CLIENT_ATTRIB_STACK_DEPTH,
 };
 
 static int not_yet(GLenum pname) {

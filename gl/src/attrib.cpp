@@ -1,0 +1,272 @@
+// The attribute stacks (GL 1.1 section 6.1.14): glPushAttrib / glPopAttrib for every server
+// attribute group of the state tables (chapter 6, the "Attribute" column), glPushClientAttrib /
+// glPopClientAttrib for pixel storage and vertex arrays. A push copies the state structs
+// (AttribRecord, context.hpp); a pop restores the groups of the pushed mask in the order Mesa's
+// glPopAttrib does (which decides, for instance, that popped materials win over a colour
+// material enabled by the enable group). State only; nothing is drawn here.
+// New state joins its group here: see the comment on AttribRecord in context.hpp.
+#include <iterator>
+
+#include "gl/generated/exec.hpp"
+#include "gl/src/context.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+// Every GL 1.1 capability (glEnable): the enable group saves those capability_flag accepts
+// (a capability not implemented yet has no flag). GL_LIGHTi are saved too, but restored by
+// the lighting group only: Mesa's enable group leaves them as they are (docs/gl.md).
+constexpr GLenum kCapabilities[] = {
+    GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
+    GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL,
+    GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_INDEX_LOGIC_OP, GL_LIGHTING,
+    GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
+    GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
+    GL_MAP1_TEXTURE_COORD_4, GL_MAP1_VERTEX_3, GL_MAP1_VERTEX_4, GL_MAP2_COLOR_4, GL_MAP2_INDEX,
+    GL_MAP2_NORMAL, GL_MAP2_TEXTURE_COORD_1, GL_MAP2_TEXTURE_COORD_2, GL_MAP2_TEXTURE_COORD_3,
+    GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
+    GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
+    GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
+    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+};
+
+// The parameters of a texture object that the texture group holds (table 6.15), nine floats.
+constexpr GLenum kTextureParameters[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
+                                         GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
+                                         GL_TEXTURE_PRIORITY,   GL_TEXTURE_BORDER_COLOR};
+constexpr std::size_t kTextureParameterFloats = 9;
+
+// Runs a GL command for its effect on state the stack saves, leaving the error flag as it was:
+// true if the command raised no error (a texture target not implemented raises one).
+template <class F>
+bool quietly(GlContext& c, F&& f) {
+  const GLenum before = c.error;
+  c.error = GL_NO_ERROR;
+  f();
+  const bool ok = c.error == GL_NO_ERROR;
+  c.error = before;
+  return ok;
+}
+
+void read_texture_parameters(GlContext& c, GLenum target, std::array<float, 9>& out) {
+  std::size_t k = 0;
+  for (GLenum pname : kTextureParameters) {
+    exec::GetTexParameterfv(c, target, pname, &out[k]);
+    k += pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1;
+  }
+}
+
+void write_texture_parameters(GlContext& c, GLenum target, const std::array<float, 9>& in) {
+  std::size_t k = 0;
+  for (GLenum pname : kTextureParameters) {
+    exec::TexParameterfv(c, target, pname, &in[k]);
+    k += pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1;
+  }
+}
+
+void save_enables(GlContext& c, AttribRecord& r) {
+  auto save = [&](GLenum cap) {
+    if (const bool* flag = capability_flag(c, cap)) r.enables.emplace_back(cap, *flag);
+  };
+  for (GLenum cap : kCapabilities) save(cap);
+  for (int i = 0; i < kMaxLights; ++i) save(GLenum(GL_LIGHT0 + i));
+}
+
+// Through glEnable / glDisable, for what they do besides the flag (GL_COLOR_MATERIAL takes
+// the current colour), and only where the value changes, as Mesa's pop; the capabilities
+// `which` selects.
+template <class Which>
+void restore_enables(GlContext& c, const AttribRecord& r, const Which& which) {
+  for (const auto& [cap, on] : r.enables) {
+    if (which(cap) && *capability_flag(c, cap) != on) on ? exec::Enable(c, cap) : exec::Disable(c, cap);
+  }
+}
+
+// The texture group's bindings and object parameters (Mesa saves the default objects' too).
+void save_textures(GlContext& c, AttribRecord& r) {
+  static_assert(kTextureParameterFloats == std::tuple_size_v<decltype(AttribRecord::TextureTarget::bound)>);
+  const std::pair<GLenum, GLenum> targets[] = {{GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
+                                               {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D}};
+  for (auto [target, binding] : targets) {
+    AttribRecord::TextureTarget t;
+    t.target = target;
+    GLint name = 0;
+    if (!quietly(c, [&] { exec::GetIntegerv(c, binding, &name); })) continue;
+    t.name = GLuint(name);
+    quietly(c, [&] {
+      read_texture_parameters(c, target, t.bound);
+      t.defaults = t.bound;
+      if (t.name == 0) return;
+      exec::BindTexture(c, target, 0);
+      read_texture_parameters(c, target, t.defaults);
+      exec::BindTexture(c, target, t.name);
+    });
+    r.texture_targets.push_back(t);
+  }
+}
+
+// Binds the pushed names again (a name deleted since comes back as a new object, as
+// glBindTexture makes it) and gives the objects their pushed parameters.
+void restore_textures(GlContext& c, const AttribRecord& r) {
+  for (const AttribRecord::TextureTarget& t : r.texture_targets) {
+    quietly(c, [&] {
+      exec::BindTexture(c, t.target, 0);
+      write_texture_parameters(c, t.target, t.defaults);
+      if (t.name == 0) return;
+      exec::BindTexture(c, t.target, t.name);
+      write_texture_parameters(c, t.target, t.bound);
+    });
+  }
+  c.textures.env_mode = r.textures.env_mode;
+  c.textures.env_color = r.textures.env_color;
+  restore_enables(c, r, [](GLenum cap) {
+    return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
+  });
+}
+
+// GL_COLOR_BUFFER_BIT (table 6.19's "color-buffer" rows).
+void restore_color_buffer(GlContext& c, const AttribRecord& r) {
+  RasterState& d = c.raster;
+  const RasterState& s = r.raster;
+  d.clear_index = s.clear_index;
+  d.clear_color = s.clear_color;
+  d.index_mask = s.index_mask;
+  d.color_mask = s.color_mask;
+  d.blend = s.blend;
+  d.blend_src = s.blend_src;
+  d.blend_dst = s.blend_dst;
+  d.dither = s.dither;
+}
+
+// GL_CURRENT_BIT (table 6.5). The colour material does not follow the popped colour (as in
+// Mesa: the next glColor updates it).
+void restore_current(GlContext& c, const AttribRecord& r) { c.current = r.current; }
+
+void restore_depth_buffer(GlContext& c, const AttribRecord& r) {
+  c.raster.depth_func = r.raster.depth_func;
+  c.raster.clear_depth = r.raster.clear_depth;
+  c.raster.depth_test = r.raster.depth_test;
+  c.raster.depth_mask = r.raster.depth_mask;
+}
+
+void restore_hints(GlContext& c, const AttribRecord& r) { c.hints = r.hints; }
+
+// GL_LIGHTING_BIT (tables 6.9-6.11): all of LightingState but GL_NORMALIZE and
+// GL_RESCALE_NORMAL (transform group). The materials are the pushed ones even if the colour
+// material was switched on meanwhile.
+void restore_lighting(GlContext& c, const AttribRecord& r) {
+  const bool normalize = c.lighting.normalize, rescale = c.lighting.rescale_normal;
+  c.lighting = r.lighting;  // GL_LIGHTi included
+  c.lighting.normalize = normalize;
+  c.lighting.rescale_normal = rescale;
+}
+
+void restore_line(GlContext& c, const AttribRecord& r) {
+  c.inert.line_smooth = r.inert.line_smooth;
+  c.inert.line_stipple = r.inert.line_stipple;
+}
+
+void restore_point(GlContext& c, const AttribRecord& r) { c.inert.point_smooth = r.inert.point_smooth; }
+
+void restore_polygon(GlContext& c, const AttribRecord& r) {
+  c.raster.cull_mode = r.raster.cull_mode;
+  c.raster.front_face = r.raster.front_face;
+  c.raster.offset_factor = r.raster.offset_factor;
+  c.raster.offset_units = r.raster.offset_units;
+  c.inert.polygon_smooth = r.inert.polygon_smooth;
+  c.raster.cull = r.raster.cull;
+  c.inert.offset_point = r.inert.offset_point;
+  c.inert.offset_line = r.inert.offset_line;
+  c.raster.polygon_offset_fill = r.raster.polygon_offset_fill;
+}
+
+void restore_stencil(GlContext& c, const AttribRecord& r) {
+  RasterState& d = c.raster;
+  const RasterState& s = r.raster;
+  d.stencil_test = s.stencil_test;
+  d.clear_stencil = s.clear_stencil;
+  d.stencil_func = s.stencil_func;
+  d.stencil_ref = s.stencil_ref;
+  d.stencil_value_mask = s.stencil_value_mask;
+  d.stencil_write_mask = s.stencil_write_mask;
+  d.stencil_fail = s.stencil_fail;
+  d.stencil_zfail = s.stencil_zfail;
+  d.stencil_zpass = s.stencil_zpass;
+}
+
+void restore_transform(GlContext& c, const AttribRecord& r) {
+  c.matrix_mode = r.matrix_mode;
+  c.lighting.normalize = r.lighting.normalize;
+  c.lighting.rescale_normal = r.lighting.rescale_normal;
+}
+
+void restore_viewport(GlContext& c, const AttribRecord& r) {
+  const Viewport& v = r.raster.viewport;
+  Viewport& d = c.raster.viewport;
+  const bool moved = d.x != v.x || d.y != v.y || d.width != v.width || d.height != v.height;
+  d = v;
+  if (moved && c.surface) c.surface->viewport_set(c);
+}
+
+}  // namespace
+
+void exec::PushAttrib(GlContext& c, GLbitfield mask) {
+  if (c.attrib_stack.size() >= std::size_t(kMaxAttribStackDepth)) return c.set_error(GL_STACK_OVERFLOW);
+  AttribRecord r;
+  r.mask = mask;
+  r.current = c.current;
+  r.lighting = c.lighting;
+  r.raster = c.raster;
+  r.inert = c.inert;
+  r.textures = c.textures;
+  save_enables(c, r);
+  if (mask & GL_TEXTURE_BIT) save_textures(c, r);
+  r.hints = c.hints;
+  r.matrix_mode = c.matrix_mode;
+  r.list_base = c.lists.base;
+  c.attrib_stack.push_back(std::move(r));
+}
+
+// In the order of Mesa's glPopAttrib (groups GL 1.1 does not have yet: none).
+void exec::PopAttrib(GlContext& c) {
+  if (c.attrib_stack.empty()) return c.set_error(GL_STACK_UNDERFLOW);
+  const AttribRecord r = std::move(c.attrib_stack.back());
+  c.attrib_stack.pop_back();
+  const GLbitfield m = r.mask;
+  if (m & GL_COLOR_BUFFER_BIT) restore_color_buffer(c, r);
+  if (m & GL_CURRENT_BIT) restore_current(c, r);
+  if (m & GL_DEPTH_BUFFER_BIT) restore_depth_buffer(c, r);
+  if (m & GL_ENABLE_BIT) {
+    restore_enables(c, r, [](GLenum cap) { return cap < GL_LIGHT0 || cap >= GLenum(GL_LIGHT0 + kMaxLights); });
+  }
+  if (m & GL_HINT_BIT) restore_hints(c, r);
+  if (m & GL_LIGHTING_BIT) restore_lighting(c, r);
+  if (m & GL_LINE_BIT) restore_line(c, r);
+  if (m & GL_LIST_BIT) c.lists.base = r.list_base;
+  if (m & GL_POINT_BIT) restore_point(c, r);
+  if (m & GL_POLYGON_BIT) restore_polygon(c, r);
+  if (m & GL_STENCIL_BUFFER_BIT) restore_stencil(c, r);
+  if (m & GL_TRANSFORM_BIT) restore_transform(c, r);
+  if (m & GL_TEXTURE_BIT) restore_textures(c, r);
+  if (m & GL_VIEWPORT_BIT) restore_viewport(c, r);
+}
+
+void exec::PushClientAttrib(GlContext& c, GLbitfield mask) {
+  if (c.client_attrib_stack.size() >= std::size_t(kMaxClientAttribStackDepth)) {
+    return c.set_error(GL_STACK_OVERFLOW);
+  }
+  c.client_attrib_stack.push_back({mask, c.pack, c.unpack, c.arrays});
+}
+
+void exec::PopClientAttrib(GlContext& c) {
+  if (c.client_attrib_stack.empty()) return c.set_error(GL_STACK_UNDERFLOW);
+  const ClientAttribRecord r = c.client_attrib_stack.back();
+  c.client_attrib_stack.pop_back();
+  if (r.mask & GL_CLIENT_PIXEL_STORE_BIT) {
+    c.pack = r.pack;
+    c.unpack = r.unpack;
+  }
+  if (r.mask & GL_CLIENT_VERTEX_ARRAY_BIT) c.arrays = r.arrays;
+}
+
+}  // namespace shadelab::gl
