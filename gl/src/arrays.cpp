@@ -281,7 +281,7 @@ void replay_internal::ArrayDraw(GlContext& c, ListReader& r) {
 // Vertex-array commands in a display list take the arrays' contents of the moment (GL 1.1
 // section 5.4). Argument errors are recorded (as Mesa's compile errors) and nothing else.
 void save::ArrayElement(GlContext& c, GLint i) {
-  if (i < 0) return record_error(c, GL_INVALID_VALUE);
+  if (i < 0) return;  // no error, as Mesa (which reads before the arrays); nothing recorded
   ListWriter w(c, Opcode::kArrayElements);
   write_elements(c, w, 1, Norm::kSpec, [&](std::size_t) { return std::size_t(i); });
 }
@@ -333,9 +333,10 @@ void exec::EdgeFlagPointer(GlContext& c, GLsizei stride, const void* ptr) {
   set_pointer(c, c.arrays.edge_flag, 1, GL_UNSIGNED_BYTE, stride, ptr, 1, 1, {GL_UNSIGNED_BYTE});
 }
 
-// Legal between glBegin and glEnd; outside them it only sets the current attributes.
+// Legal between glBegin and glEnd; outside them it only sets the current attributes. A
+// negative index is no error in Mesa (which reads before the arrays): here it does nothing.
 void exec::ArrayElement(GlContext& c, GLint i) {
-  if (i < 0) return c.set_error(GL_INVALID_VALUE);
+  if (i < 0) return;
   array_element(c, std::size_t(i), Norm::kSpec);
 }
 

@@ -1,6 +1,8 @@
 // glLight*, glLightModel*, glMaterial*, glColorMaterial, glShadeModel and their queries
 // (GL 1.1 section 2.13, 6.1.3). Validates and stores parameters: light positions and spot
 // directions go to eye space here. The lighting equation itself is the core's light_point.
+#include <array>
+
 #include <glm/mat3x3.hpp>
 
 #include "gl/generated/exec.hpp"
@@ -59,10 +61,19 @@ void set_light(GlContext& c, Light& l, GLenum pname, const float* p) {
   }
 }
 
-// Shared by the four glLight variants. `scalar`: glLightf/glLighti, which take only the
-// single-valued parameters. Integer colours map to [-1, 1]; other integers convert directly.
+// The scalar forms (glLightf, glLightModeli, glMaterialf, ...) as Mesa runs them: the vector
+// form with (param, 0, 0, 0), so a vector parameter is set rather than refused (GL 1.1 makes
+// it GL_INVALID_ENUM; Mesa's errors are the bar: docs/gl.md).
+template <class T>
+std::array<T, 4> padded(T param) {
+  return {param, T(0), T(0), T(0)};
+}
+
+// Shared by the four glLight variants. Integer colours map to [-1, 1]; other integers convert
+// directly.
 template <class T>
 void light_call(GlContext& c, GLenum light, GLenum pname, const T* params, bool scalar) {
+  if (scalar) return light_call(c, light, pname, padded(*params).data(), false);
   int n = light_param_count(pname);
   if (light < GL_LIGHT0 || light >= GL_LIGHT0 + kMaxLights || n == 0 || (scalar && n != 1)) {
     return c.set_error(GL_INVALID_ENUM);
@@ -82,6 +93,7 @@ void light_call(GlContext& c, GLenum light, GLenum pname, const T* params, bool 
 
 template <class T>
 void light_model_call(GlContext& c, GLenum pname, const T* params, bool scalar) {
+  if (scalar) return light_model_call(c, pname, padded(*params).data(), false);
   LightModel& m = c.lighting.model;
   bool known = pname == GL_LIGHT_MODEL_AMBIENT || pname == GL_LIGHT_MODEL_LOCAL_VIEWER ||
                pname == GL_LIGHT_MODEL_TWO_SIDE || pname == GL_LIGHT_MODEL_COLOR_CONTROL;
@@ -138,6 +150,7 @@ void set_material(const LightingState& l, Material& m, bool front, GLenum pname,
 
 template <class T>
 void material_call(GlContext& c, GLenum face, GLenum pname, const T* params, bool scalar) {
+  if (scalar) return material_call(c, face, pname, padded(*params).data(), false);
   int n = material_param_count(pname);
   bool face_ok = face == GL_FRONT || face == GL_BACK || face == GL_FRONT_AND_BACK;
   if (!face_ok || n == 0 || (scalar && pname != GL_SHININESS)) return c.set_error(GL_INVALID_ENUM);

@@ -46,8 +46,10 @@ bool* client_capability_flag(GlContext& c, GLenum cap) {
 
 namespace {
 
+// The client arrays are accepted too and set the array's flag, as Mesa's glEnable does.
 void set_cap(GlContext& c, GLenum cap, bool on) {
   bool* flag = capability_flag(c, cap);
+  if (!flag) flag = client_capability_flag(c, cap);
   if (!flag) return c.set_error(GL_INVALID_ENUM);
   *flag = on;
   if (cap == GL_COLOR_MATERIAL && on) apply_color_material(c);
