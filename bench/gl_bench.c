@@ -10,7 +10,10 @@
  *           lights, Gouraud, drawn with glDrawElements from float arrays;
  *   teapot  the lecture's shiny red teapot (glutSolidTeapot, one white directional light);
  *   fill    a full-screen 100 x 100 wall under a spot light, with two transparent layers
- *           (blended, src alpha / one minus src alpha) over it: fill-bound. */
+ *           (blended, src alpha / one minus src alpha) over it: fill-bound;
+ *   list    the sphere scene's mesh as a display list, compiled once (glBegin(GL_TRIANGLES),
+ *           glNormal3fv and glVertex3fv per index, as programs build lists) and called each
+ *           frame: to compare with the sphere's glDrawElements. */
 #define _DEFAULT_SOURCE 1
 #include <math.h>
 #include <stdio.h>
@@ -118,6 +121,19 @@ static void draw_sphere(const Mesh* m) {
   glDrawElements(GL_TRIANGLES, m->index_count, GL_UNSIGNED_INT, m->indices);
 }
 
+/* The sphere's triangles, vertex by vertex, into list 1. */
+static void compile_sphere_list(const Mesh* m) {
+  glNewList(1, GL_COMPILE);
+  glBegin(GL_TRIANGLES);
+  for (int k = 0; k < m->index_count; ++k) {
+    const GLuint i = m->indices[k];
+    glNormal3fv(&m->normals[3 * i]);
+    glVertex3fv(&m->positions[3 * i]);
+  }
+  glEnd();
+  glEndList();
+}
+
 static void setup_teapot(int width, int height) {
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
@@ -183,7 +199,7 @@ static void draw_fill(void) {
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    fprintf(stderr, "usage: %s sphere|teapot|fill [--size WxH] [--triangles N] [--frames F] [--warmup W] [--png FILE]\n", argv[0]);
+    fprintf(stderr, "usage: %s sphere|teapot|fill|list [--size WxH] [--triangles N] [--frames F] [--warmup W] [--png FILE]\n", argv[0]);
     return 2;
   }
   const char* scene = argv[1];
@@ -211,15 +227,17 @@ int main(int argc, char** argv) {
   glViewport(0, 0, width, height);
   glClearColor(0.1f, 0.1f, 0.12f, 1.0f);
   Mesh mesh = {0};
-  int kind = !strcmp(scene, "sphere") ? 0 : !strcmp(scene, "teapot") ? 1 : !strcmp(scene, "fill") ? 2 : -1;
+  int kind = !strcmp(scene, "sphere") ? 0 : !strcmp(scene, "teapot") ? 1 : !strcmp(scene, "fill") ? 2
+             : !strcmp(scene, "list") ? 3 : -1;
   if (kind < 0) {
     fprintf(stderr, "unknown scene %s\n", scene);
     return 2;
   }
-  if (kind == 0) {
+  if (kind == 0 || kind == 3) {
     mesh = make_sphere(triangles);
     triangles = mesh.index_count / 3;
     setup_sphere(width, height);
+    if (kind == 3) compile_sphere_list(&mesh);
   } else if (kind == 1) {
     triangles = 0; /* glutSolidTeapot's own tessellation (printed as 0: not counted here) */
     setup_teapot(width, height);
@@ -233,6 +251,7 @@ int main(int argc, char** argv) {
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     if (kind == 0) draw_sphere(&mesh);
     else if (kind == 1) glutSolidTeapot(1.0);
+    else if (kind == 3) glCallList(1);
     else draw_fill();
     glFinish();
     if (f >= 0) times[f] = now_ms() - t0;

@@ -92,6 +92,9 @@ run_scene() {  # label, then the arguments of bench_gl_*
 run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
 run_scene "b-shiny-teapot" teapot
 run_scene "c-fill-wall-2-layers" fill
+# The sphere's mesh again, compiled once into a display list (glBegin/glEnd) and called each
+# frame: next to (a), what a list costs against glDrawElements.
+run_scene "e-sphere-${big_triangles}-display-list" list --triangles "$big_triangles"
 paired llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png" -- \
   $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png"
 agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.png" "$out/d-phong.shadelab.png" \

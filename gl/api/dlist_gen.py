@@ -160,11 +160,38 @@ def replay_case(lt: ListTables, c: Command) -> str:
     return "\n".join(lines)
 
 
+ATTRIBUTE = re.compile(r"(Vertex|Normal|Color|TexCoord)([1-4])(b|s|i|f|d|ub|us|ui)(v?)")
+
+
+def decode_case(c: Command) -> str | None:
+    """decode_attribute's case for an attribute command (its arguments read as the replay
+    reads them), or None for any other command."""
+    m = ATTRIBUTE.fullmatch(c.short)
+    if not m:
+        return None
+    kind = f"AttributeKind::k{m.group(1)}"
+    lines = [f"    case Opcode::k{c.short}: {{"]
+    if m.group(4):
+        p = c.params[0]
+        lines.append(f"      const {element_type(p)}* const {p.name} = reader.array<{element_type(p)}>();")
+        lines.append(f"      if (!{p.name}) return false;")
+        values = [f"attribute_value({p.name}[{i}], {kind})" for i in range(int(m.group(2)))]
+    else:
+        for p in c.params:
+            lines.append(f"      const {p.ctype} {p.name} = reader.scalar<{p.ctype}>();")
+        values = [f"attribute_value({p.name}, {kind})" for p in c.params]
+    lines.append(f"      out = VertexAttribute::make({kind}, {{{', '.join(values)}}});")
+    lines.append("      return true;")
+    lines.append("    }")
+    return "\n".join(lines)
+
+
 def dlist_commands_cpp(lt: ListTables) -> str:
     records = "\n\n".join(record_function(c) for c in lt.compiled)
     saves = "\n\n".join(save_function(c) for c in lt.compiled if c.short not in lt.hand)
     cases = "\n".join(replay_case(lt, c) for c in lt.compiled)
     internal = "\n".join(f"    case Opcode::k{n}: return replay_internal::{n}(ctx, reader);" for n in lt.internal)
+    decodes = "\n".join(d for d in (decode_case(c) for c in lt.compiled) if d)
     return f"""// The recording and replay of every compiled command (GL 1.1 section 5.4): arguments copied
 // in, read back and run through run::Foo, as the immediate call runs (the glBegin/glEnd rule
 // included), never through the exported glFoo (a replayed glCallList is not recorded again).
@@ -173,6 +200,7 @@ def dlist_commands_cpp(lt: ListTables) -> str:
 
 #include "gl/generated/run.hpp"
 #include "gl/src/dlist.hpp"
+#include "gl/src/dlist_geometry.hpp"
 
 namespace shadelab::gl {{
 
@@ -184,6 +212,14 @@ void replay_command(GlContext& ctx, ListReader& reader) {{
   switch (reader.next()) {{
 {cases}
 {internal}
+  }}
+}}
+
+bool decode_attribute(Opcode op, ListReader& reader, VertexAttribute& out) {{
+  switch (op) {{
+{decodes}
+    default:
+      return false;
   }}
 }}
 

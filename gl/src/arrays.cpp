@@ -230,36 +230,29 @@ void record_draw(GlContext& c, GLenum mode, std::size_t count, const auto& index
   write_elements(c, w, count, Norm::kDraw, index_of);
 }
 
-// Recorded elements, read back.
-struct Elements {
-  std::uint64_t count;
-  const float *normals, *colors, *texcoords, *positions;
-  explicit Elements(ListReader& r)
-      : count(r.scalar<std::uint64_t>()), normals(r.array<float>()), colors(r.array<float>()),
-        texcoords(r.array<float>()), positions(r.array<float>()) {}
-
-  // Element k's attributes become current, then its vertex is specified (outside glBegin/glEnd
-  // it specifies none).
-  void specify(GlContext& c, std::uint64_t k) const {
-    if (normals) c.current.normal = glm::vec3(normals[3 * k], normals[3 * k + 1], normals[3 * k + 2]);
-    if (colors) {
-      c.current.color = glm::vec4(colors[4 * k], colors[4 * k + 1], colors[4 * k + 2], colors[4 * k + 3]);
-      apply_color_material(c);
-    }
-    if (texcoords) {
-      c.current.texcoord = glm::vec4(texcoords[4 * k], texcoords[4 * k + 1], texcoords[4 * k + 2], texcoords[4 * k + 3]);
-    }
-    if (positions && c.prim.active) {
-      emit_vertex(c, glm::vec4(positions[4 * k], positions[4 * k + 1], positions[4 * k + 2], positions[4 * k + 3]));
-    }
+// Element k's attributes become current, then its vertex is specified (outside glBegin/glEnd
+// it specifies none).
+void specify(GlContext& c, const RecordedElements& e, std::uint64_t k) {
+  if (e.normals) c.current.normal = glm::vec3(e.normals[3 * k], e.normals[3 * k + 1], e.normals[3 * k + 2]);
+  if (e.colors) {
+    c.current.color = glm::vec4(e.colors[4 * k], e.colors[4 * k + 1], e.colors[4 * k + 2], e.colors[4 * k + 3]);
+    apply_color_material(c);
   }
-};
+  if (e.texcoords) {
+    const float* t = &e.texcoords[4 * k];
+    c.current.texcoord = glm::vec4(t[0], t[1], t[2], t[3]);
+  }
+  if (e.positions && c.prim.active) {
+    const float* p = &e.positions[4 * k];
+    emit_vertex(c, glm::vec4(p[0], p[1], p[2], p[3]));
+  }
+}
 
 }  // namespace
 
 void replay_internal::ArrayElements(GlContext& c, ListReader& r) {
-  const Elements e(r);
-  for (std::uint64_t k = 0; k < e.count; ++k) e.specify(c, k);
+  const RecordedElements e(r);
+  for (std::uint64_t k = 0; k < e.count; ++k) specify(c, e, k);
 }
 
 // A recorded glDrawArrays / glDrawElements: as the command draws them (glDrawArrays' rule
@@ -267,12 +260,12 @@ void replay_internal::ArrayElements(GlContext& c, ListReader& r) {
 // were, as Mesa does.
 void replay_internal::ArrayDraw(GlContext& c, ListReader& r) {
   const GLenum mode = r.scalar<GLenum>();
-  const Elements e(r);
+  const RecordedElements e(r);
   if (c.prim.active) return c.set_error(GL_INVALID_OPERATION);
   const CurrentAttribs saved = c.current;
   const Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);
-  for (std::uint64_t k = 0; k < e.count; ++k) e.specify(c, k);
+  for (std::uint64_t k = 0; k < e.count; ++k) specify(c, e, k);
   end_primitive(c);
   c.current = saved;
   c.lighting.front = front, c.lighting.back = back;

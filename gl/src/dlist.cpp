@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "gl/generated/exec.hpp"
+#include "gl/src/dlist_geometry.hpp"
 
 namespace shadelab::gl {
 namespace {
@@ -135,6 +136,7 @@ void exec::NewList(GlContext& c, GLuint list, GLenum mode) {
 void exec::EndList(GlContext& c) {
   if (c.lists.mode == GL_COMPILE_AND_EXECUTE && c.prim.active) c.set_error(GL_INVALID_OPERATION);
   if (c.lists.mode == 0) return c.set_error(GL_INVALID_OPERATION);
+  compile_geometry(*c.lists.building);
   std::shared_ptr<const DisplayList> list = std::move(c.lists.building);
   c.lists.mode = 0;
   ListNames& names = *c.lists.names;

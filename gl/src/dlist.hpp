@@ -23,7 +23,8 @@ class ListWriter {
  public:
   static constexpr std::uint64_t kNull = ~std::uint64_t(0);
 
-  ListWriter(GlContext& c, Opcode op) : code_(c.lists.building->code), start_(code_.size()) {
+  ListWriter(GlContext& c, Opcode op) : ListWriter(c.lists.building->code, op) {}
+  ListWriter(std::vector<std::uint64_t>& code, Opcode op) : code_(code), start_(code.size()) {
     code_.push_back(std::uint64_t(op));
   }
   ~ListWriter() {
@@ -63,9 +64,13 @@ class ListWriter {
 class ListReader {
  public:
   explicit ListReader(const DisplayList& list)
-      : at_(list.code.data()), end_(list.code.data() + list.code.size()) {}
+      : list_(list), at_(list.code.data()), end_(list.code.data() + list.code.size()) {}
 
+  const DisplayList& list() const { return list_; }
   bool done() const { return at_ == end_; }
+  /// Where the reader is, in words from the list's start; seek goes back there.
+  std::size_t offset() const { return std::size_t(at_ - list_.code.data()); }
+  void seek(std::size_t offset) { at_ = list_.code.data() + offset; }
   /// The next command's opcode; its arguments follow.
   Opcode next() {
     next_ = at_ + (*at_ >> 16);
@@ -98,9 +103,21 @@ class ListReader {
 
  private:
   static constexpr std::uint64_t kZeros[16] = {};
+  const DisplayList& list_;
   const std::uint64_t* at_;
   const std::uint64_t* end_;
   const std::uint64_t* next_ = nullptr;
+};
+
+/// The elements of a dereferenced vertex-array command (ArrayElements, ArrayDraw: gl/src/
+/// arrays.cpp writes them): per element, 3 floats of normal, 4 of colour, 4 of texture
+/// coordinates and 4 of position, each array null when its client array was disabled.
+struct RecordedElements {
+  std::uint64_t count;
+  const float *normals, *colors, *texcoords, *positions;
+  explicit RecordedElements(ListReader& r)
+      : count(r.scalar<std::uint64_t>()), normals(r.array<float>()), colors(r.array<float>()),
+        texcoords(r.array<float>()), positions(r.array<float>()) {}
 };
 
 /// While a command is compiled: runs its saver (out of memory becomes GL_OUT_OF_MEMORY) and

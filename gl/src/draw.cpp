@@ -444,7 +444,9 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   // vertex by vertex (nothing is drawn yet).
   if (homogeneous && l.enabled) return false;
   if (!l.enabled) m.normals.clear();
-  QuadSplit split = from_elements ? QuadSplit::kFromSecond : QuadSplit::kFromFirst;
+  // Quads of a glDrawElements, or begun by a display list: along b-d, as llvmpipe
+  // (docs/gl-conformance.md).
+  QuadSplit split = from_elements || c.lists.depth > 0 ? QuadSplit::kFromSecond : QuadSplit::kFromFirst;
   if (mode == GL_QUADS) {
     for (std::size_t k = 0; k < count && split == QuadSplit::kFromFirst; ++k) {
       glm::vec4 v = projection * m.positions[m.sequence[k] - lo];
