@@ -55,7 +55,12 @@ class Input {
         GL_PACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_PACK_ROW_LENGTH, GL_UNPACK_SKIP_ROWS,
         GL_PACK_SKIP_PIXELS, GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST, GL_VENDOR, GL_EXTENSIONS,
         GL_COMPILE, GL_COMPILE_AND_EXECUTE, GL_2_BYTES, GL_3_BYTES, GL_4_BYTES, GL_LIST_INDEX,
-        GL_LIST_MODE, GL_LIST_BASE, GL_MAX_LIST_NESTING, 0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
+        GL_LIST_MODE, GL_LIST_BASE, GL_MAX_LIST_NESTING,
+        GL_FOG, GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_COLOR_LOGIC_OP, GL_LOGIC_OP, GL_POLYGON_STIPPLE,
+        GL_DITHER, GL_FOG_MODE, GL_FOG_DENSITY, GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_FOG_INDEX,
+        GL_FOG_HINT, GL_EXP, GL_EXP2, GL_XOR, GL_SET, GL_CLEAR, GL_SCISSOR_BOX, GL_ALPHA_TEST_REF,
+        GL_LOGIC_OP_MODE, GL_UNPACK_LSB_FIRST, GL_PACK_LSB_FIRST, GL_UNPACK_SKIP_PIXELS,
+        0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
 
@@ -130,7 +135,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 46) {
+    switch (in.byte() % 51) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -246,6 +251,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
+      case 46: {  // fog parameters through every form
+        for (float& v : f) v = in.number();
+        const GLint iv[4] = {GLint(in.any_enum()), in.small(-3, 3) << 29, in.small(-100, 100), 0x7fffffff};
+        const GLenum pname = in.any_enum();
+        if (in.byte() % 2) glFogfv(pname, f), glFogf(pname, f[0]);
+        else glFogiv(pname, iv), glFogi(pname, iv[0]);
+        break;
+      }
+      case 47: glScissor(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;
+      case 48: glAlphaFunc(in.any_enum(), in.number()); break;
+      case 49: glLogicOp(in.byte() % 2 ? in.any_enum() : GLenum(GL_CLEAR + in.small(-1, 16))); break;
+      case 50:  // the stipple through random pixel-store state (the pixel buffer holds any)
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        if (in.byte() % 2) glPolygonStipple(b->pixels);
+        else glGetPolygonStipple(b->pixels);
+        break;
       case 39: {
         glFinish();
         GLint w, h, bytes;

@@ -30,6 +30,14 @@ MatrixStack& GlContext::current_stack() {
   }
 }
 
+void set_initial_window_state(GlContext& c, int width, int height) {
+  c.raster.viewport.width = width;
+  c.raster.viewport.height = height;
+  c.raster.scissor_width = width;
+  c.raster.scissor_height = height;
+  c.ever_current = true;
+}
+
 namespace {
 
 void track(Material& m, GLenum mode, const glm::vec4& color) {

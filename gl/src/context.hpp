@@ -99,6 +99,38 @@ struct RasterState {
   double clear_depth = 1.0;
   GLint clear_stencil = 0;
   bool dither = true;  // accepted and reported; shadelab never dithers (nor does llvmpipe)
+  // glScissor (GL 1.1 section 4.1.2): the box as given; the first binding to a drawable sets
+  // it to the drawable's size (set_initial_window_state).
+  bool scissor_test = false;
+  GLint scissor_x = 0, scissor_y = 0;
+  GLsizei scissor_width = 0, scissor_height = 0;
+  // glAlphaFunc (4.1.3): the reference clamped to [0, 1].
+  bool alpha_test = false;
+  GLenum alpha_func = GL_ALWAYS;
+  float alpha_ref = 0.0f;
+  // glLogicOp (4.1.7). GL 1.1's GL_LOGIC_OP is GL_INDEX_LOGIC_OP: accepted, no effect on
+  // RGBA buffers (as in Mesa); GL_COLOR_LOGIC_OP is the one that applies.
+  bool color_logic_op = false, index_logic_op = false;
+  GLenum logic_op = GL_COPY;
+  // glPolygonStipple (3.5.2): rows[y] bit x is pixel (x, y) of the pattern (bit 0 leftmost,
+  // the core's PolygonStipple layout); initially all ones.
+  bool polygon_stipple = false;
+  std::array<std::uint32_t, 32> stipple = filled_stipple();
+
+  static std::array<std::uint32_t, 32> filled_stipple() {
+    std::array<std::uint32_t, 32> rows;
+    rows.fill(~0u);
+    return rows;
+  }
+};
+
+/// Fog (GL 1.1 section 3.9), as glFog sets it and glGet reports it.
+struct FogSettings {
+  bool enabled = false;  // GL_FOG
+  GLenum mode = GL_EXP;
+  glm::vec4 color{0.0f};  // clamped to [0, 1]
+  float density = 1.0f, start = 0.0f, end = 1.0f;
+  float index = 0.0f;  // GL_FOG_INDEX: stored and reported (colour-index mode only)
 };
 
 /// Capabilities that are accepted and reported but change nothing shadelab draws (they only
@@ -318,6 +350,7 @@ struct GlContext {
   CurrentAttribs current;
   RasterState raster;
   InertCaps inert;
+  FogSettings fog;
   TextureState textures;
   PixelStore pack, unpack;
   ClientArrays arrays;
@@ -380,6 +413,10 @@ void with_context(F&& f) noexcept {
     c->set_error(GL_OUT_OF_MEMORY);
   }
 }
+
+/// What the first binding of a context to a drawable of `width` x `height` pixels sets: the
+/// viewport and the scissor box (GL 1.1 sections 2.10.1 and 4.1.2).
+void set_initial_window_state(GlContext& c, int width, int height);
 
 /// Makes the context's pipeline at first use, drawing deferred (PipelineContext::set_deferred:
 /// a frame's draws are rasterized tile by tile when something reads the framebuffer); none

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -29,6 +30,14 @@ inline GLint round_to_int(double f) {
   r = std::clamp(r, double(std::numeric_limits<GLint>::min()),
                  double(std::numeric_limits<GLint>::max()));
   return GLint(r);
+}
+
+/// glGetIntegerv's conversion of floating-point state, as Mesa's: (int) lroundf(f), rounded
+/// half away from zero, wrapped to 32 bits past the GLint range (1e10 gives 1410065408), 0
+/// past the long range or for NaN.
+inline GLint lround_to_int(double f) {
+  if (!(std::fabs(f) < 9.2e18)) return 0;
+  return GLint(std::uint32_t(std::uint64_t(std::llround(f))));
 }
 
 /// glGet*v's output: `n` float values as the caller's type (colours mapped as colours when

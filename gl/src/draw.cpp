@@ -99,6 +99,22 @@ FragmentState fragment_state(const GlContext& c) {
   f.polygon_offset = r.polygon_offset_fill;
   f.offset_factor = r.offset_factor;
   f.offset_units = r.offset_units;
+  f.scissor = {r.scissor_test, r.scissor_x, r.scissor_y, r.scissor_width, r.scissor_height};
+  f.alpha_test = {r.alpha_test, compare_func(r.alpha_func), r.alpha_ref};
+  f.logic_op = {r.color_logic_op, LogicOp(r.logic_op - GL_CLEAR)};
+  f.stipple.enabled = r.polygon_stipple;
+  if (r.polygon_stipple) f.stipple.rows = r.stipple;
+  return f;
+}
+
+// The core's fog from GL's (GL 1.1 section 3.9).
+shadelab::FogState fog_state(const GlContext& c) {
+  const FogSettings& g = c.fog;
+  shadelab::FogState f;
+  f.enabled = g.enabled;
+  f.mode = g.mode == GL_LINEAR ? FogMode::kLinear : g.mode == GL_EXP2 ? FogMode::kExp2 : FogMode::kExp;
+  f.color = glm::vec3(g.color);
+  f.start = g.start, f.end = g.end, f.density = g.density;
   return f;
 }
 
@@ -329,6 +345,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   shade.shading = flat ? ShadingMode::kFlat : ShadingMode::kGouraud;
   shade.texture = active_texture(c);
   shade.texture_env = env_mode(c.textures.env_mode);
+  shade.fog = fog_state(c);
   const LightingState& l = c.lighting;
   bool lit = l.enabled && !p.deferred_lighting;  // colours lit per vertex above
   VertexInput in;
@@ -505,6 +522,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   shade.back = l.back;
   shade.texture = texture;
   shade.texture_env = env_mode(c.textures.env_mode);
+  shade.fog = fog_state(c);
   VertexInput in;
   in.positions = m.positions;
   in.normals = m.normals;

@@ -1,7 +1,8 @@
-// Per-fragment state and clearing (GL 1.1 sections 4.1-4.2): glDepthFunc, glDepthMask,
-// glColorMask, glBlendFunc, glStencil*, glCullFace, glFrontFace, glPolygonOffset, glClear*.
-// Stores state; the core pipeline applies it per fragment. glClear clears the framebuffer,
-// tile by tile: with the pipeline, each tile is cleared by the draw that next draws into it.
+// Per-fragment state and clearing (GL 1.1 sections 4.1-4.2): glScissor, glAlphaFunc,
+// glDepthFunc, glDepthMask, glColorMask, glBlendFunc, glLogicOp, glStencil*, glCullFace,
+// glFrontFace, glPolygonOffset, glClear*. Stores state; the core pipeline applies it per
+// fragment. glClear clears the framebuffer tile by tile (with the pipeline, each tile is
+// cleared by the draw that next draws into it), or the scissor box's pixels at once.
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -144,6 +145,48 @@ void clear_stencil(GlContext& c) {
   });
 }
 
+// The scissor box cut to the framebuffer, [x0, x1) x [y0, y1), when the scissor test leaves
+// some pixel of the framebuffer out (else false: a clear writes every pixel).
+bool scissor_box(const GlContext& c, int& x0, int& y0, int& x1, int& y1) {
+  const RasterState& r = c.raster;
+  if (!r.scissor_test) return false;
+  const long w = c.fb.width, h = c.fb.height;
+  x0 = int(std::clamp<long>(r.scissor_x, 0, w)), y0 = int(std::clamp<long>(r.scissor_y, 0, h));
+  x1 = int(std::clamp<long>(long(r.scissor_x) + r.scissor_width, 0, w));
+  y1 = int(std::clamp<long>(long(r.scissor_y) + r.scissor_height, 0, h));
+  return !(x0 == 0 && y0 == 0 && x1 == w && y1 == h);
+}
+
+// A clear inside the scissor box (GL 1.1 section 4.2.3: the clear honours the pixel
+// ownership and scissor tests and the write masks): the box's pixels written at once, after
+// the waiting draws and clears, and its tiles marked changed (no longer known cleared).
+void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y0, int x1, int y1) {
+  make_pipeline(c);
+  settle_clears(c);
+  if (x0 >= x1 || y0 >= y1) return;
+  const std::array<std::uint8_t, 4> px = Framebuffer::color_bytes(c.raster.clear_color);
+  const auto& mask = c.raster.color_mask;
+  const float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
+  const std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
+  const std::uint8_t s = std::uint8_t(c.raster.clear_stencil & 0xff);
+  auto rows = [&](std::size_t begin, std::size_t end) {
+    for (std::size_t y = begin; y < end; ++y) {
+      const std::size_t row = y * std::size_t(c.fb.width);
+      for (std::size_t i = row + std::size_t(x0); i < row + std::size_t(x1); ++i) {
+        for (std::size_t k = 0; color && k < 4; ++k) {
+          if (mask[k]) c.fb.color[i * 4 + k] = px[k];
+        }
+        if (depth) c.fb.depth[i] = d;
+        if (stencil) c.fb.stencil[i] = std::uint8_t((c.fb.stencil[i] & ~write) | (s & write));
+      }
+    }
+  };
+  const std::size_t area = std::size_t(x1 - x0) * std::size_t(y1 - y0);
+  if (c.pipeline && area >= (1u << 16)) c.pipeline->parallel_for(std::size_t(y1 - y0), 16, [&](std::size_t b, std::size_t e) { rows(std::size_t(y0) + b, std::size_t(y0) + e); });
+  else rows(std::size_t(y0), std::size_t(y1));
+  mark_dirty(c, x0, y0, x1, y1);
+}
+
 }  // namespace
 
 void exec::ClearColor(GlContext& c, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
@@ -156,12 +199,17 @@ void exec::ClearDepth(GlContext& c, GLdouble depth) {
 
 void exec::ClearStencil(GlContext& c, GLint s) { c.raster.clear_stencil = s; }
 
-// Clears the whole framebuffer (shadelab has no scissor), through the colour, depth and
+// Clears the framebuffer, or the scissor box's part of it, through the colour, depth and
 // stencil write masks. The accumulation bit is accepted; there is no accumulation buffer.
 void exec::Clear(GlContext& c, GLbitfield mask) {
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
                            GL_ACCUM_BUFFER_BIT;
   if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
+  int x0, y0, x1, y1;
+  if (scissor_box(c, x0, y0, x1, y1)) {
+    return clear_box(c, mask & GL_COLOR_BUFFER_BIT, (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
+                     (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);
+  }
   c.tiles.ahead.clear();
   if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
   if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
@@ -221,6 +269,27 @@ void exec::StencilMask(GlContext& c, GLuint mask) { c.raster.stencil_write_mask 
 void exec::PolygonOffset(GlContext& c, GLfloat factor, GLfloat units) {
   c.raster.offset_factor = factor;
   c.raster.offset_units = units;
+}
+
+// GL 1.1 section 4.1.2: a negative width or height is GL_INVALID_VALUE; the box is kept as
+// given (x and y may be negative) and cut to the framebuffer where it is used.
+void exec::Scissor(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
+  c.raster.scissor_x = x, c.raster.scissor_y = y;
+  c.raster.scissor_width = width, c.raster.scissor_height = height;
+}
+
+// GL 1.1 section 4.1.3: the reference is clamped to [0, 1].
+void exec::AlphaFunc(GlContext& c, GLenum func, GLclampf ref) {
+  if (!is_compare_func(func)) return c.set_error(GL_INVALID_ENUM);
+  c.raster.alpha_func = func;
+  c.raster.alpha_ref = clamp01(ref);
+}
+
+// GL 1.1 section 4.1.7: one of the sixteen operations, GL_CLEAR .. GL_SET.
+void exec::LogicOp(GlContext& c, GLenum opcode) {
+  if (opcode < GL_CLEAR || opcode > GL_SET) return c.set_error(GL_INVALID_ENUM);
+  c.raster.logic_op = opcode;
 }
 
 }  // namespace shadelab::gl

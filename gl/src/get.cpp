@@ -145,6 +145,18 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_STENCIL_CLEAR_VALUE: out = ints({double(r.clear_stencil)}); return true;
     case GL_POLYGON_OFFSET_FACTOR: out = make(Kind::kFloat, {r.offset_factor}); return true;
     case GL_POLYGON_OFFSET_UNITS: out = make(Kind::kFloat, {r.offset_units}); return true;
+    case GL_SCISSOR_BOX:
+      out = ints({double(r.scissor_x), double(r.scissor_y), double(r.scissor_width), double(r.scissor_height)});
+      return true;
+    case GL_ALPHA_TEST_FUNC: out = ints({double(r.alpha_func)}); return true;
+    case GL_ALPHA_TEST_REF: out = make(Kind::kColor, {r.alpha_ref}); return true;
+    case GL_LOGIC_OP_MODE: out = ints({double(r.logic_op)}); return true;
+    case GL_FOG_MODE: out = ints({double(c.fog.mode)}); return true;
+    case GL_FOG_DENSITY: out = make(Kind::kFloat, {c.fog.density}); return true;
+    case GL_FOG_START: out = make(Kind::kFloat, {c.fog.start}); return true;
+    case GL_FOG_END: out = make(Kind::kFloat, {c.fog.end}); return true;
+    case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
+    case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.bound_name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
@@ -200,7 +212,7 @@ T convert(double v, Kind kind) {
     return v != 0.0 ? GL_TRUE : GL_FALSE;
   } else if constexpr (std::is_same_v<T, GLint>) {
     if (kind == Kind::kColor) return color_to_int(v);
-    return kind == Kind::kFloat ? round_to_int(v) : GLint(v);
+    return kind == Kind::kFloat ? lround_to_int(v) : GLint(v);
   } else {
     return T(v);
   }

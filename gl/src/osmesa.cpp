@@ -50,12 +50,7 @@ void bind_buffer(GlContext& c, void* buffer, int width, int height) {
   if (c.fb.width != width || c.fb.height != height) c.fb.resize(width, height);
   import_user_buffer(c);
   reset_tiles(c);
-  if (!c.ever_current) {
-    // The first binding sets the viewport to the whole buffer (GL 1.1 section 2.10.1).
-    c.raster.viewport.width = width;
-    c.raster.viewport.height = height;
-    c.ever_current = true;
-  }
+  if (!c.ever_current) set_initial_window_state(c, width, height);
 }
 
 }  // namespace

@@ -43,6 +43,17 @@ PixelLayout pixel_layout(const PixelStore& s, int components, int type_size, int
   return l;
 }
 
+BitmapLayout bitmap_layout(const PixelStore& s, int width) {
+  const std::size_t bits = std::size_t(s.row_length > 0 ? s.row_length : width);
+  const std::size_t align = std::size_t(s.alignment);
+  BitmapLayout l;
+  l.row_stride = (bits + 8 * align - 1) / (8 * align) * align;
+  l.start = std::size_t(s.skip_rows) * l.row_stride;
+  l.skip_bits = std::size_t(s.skip_pixels);
+  l.lsb_first = s.lsb_first;
+  return l;
+}
+
 namespace {
 
 template <class T>

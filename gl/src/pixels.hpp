@@ -31,6 +31,22 @@ struct PixelLayout {
 };
 PixelLayout pixel_layout(const PixelStore& store, int components, int type_size, int width);
 
+/// Where the bits of a GL_BITMAP image lie (GL 1.1 section 3.6.3, bitmaps): one bit per
+/// pixel, rows of ceil(l / 8) bytes (l the row length, or the width) padded to the alignment,
+/// GL_*_SKIP_PIXELS counted in bits, GL_*_LSB_FIRST choosing the bit order in a byte.
+struct BitmapLayout {
+  std::size_t start = 0;       // bytes before row 0 (the skipped rows)
+  std::size_t row_stride = 0;  // bytes from one row to the next
+  std::size_t skip_bits = 0;   // bits before pixel 0 of a row
+  bool lsb_first = false;
+  std::size_t byte(int x, int y) const { return start + std::size_t(y) * row_stride + (skip_bits + std::size_t(x)) / 8; }
+  unsigned mask(int x) const {
+    const unsigned bit = unsigned((skip_bits + std::size_t(x)) % 8);
+    return lsb_first ? 1u << bit : 0x80u >> bit;
+  }
+};
+BitmapLayout bitmap_layout(const PixelStore& store, int width);
+
 /// Component of `type` at `p` as a float: unsigned integers map to [0, 1], signed ones to
 /// [-1, 1], floats are kept.
 float read_component(const unsigned char* p, GLenum type);

@@ -6,8 +6,8 @@
 namespace shadelab::gl {
 
 // The flag behind an enable capability, or nullptr for one shadelab does not accept.
-// Capabilities that change images shadelab cannot draw (fog, alpha test, scissor, clip planes,
-// texture generation, logic op, 1D textures, stipple) are rejected with GL_INVALID_ENUM.
+// Capabilities that change images shadelab cannot draw yet (clip planes, texture generation,
+// 1D textures) are rejected with GL_INVALID_ENUM.
 bool* capability_flag(GlContext& c, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return &c.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
@@ -21,6 +21,12 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_STENCIL_TEST: return &c.raster.stencil_test;
     case GL_POLYGON_OFFSET_FILL: return &c.raster.polygon_offset_fill;
     case GL_DITHER: return &c.raster.dither;
+    case GL_SCISSOR_TEST: return &c.raster.scissor_test;
+    case GL_ALPHA_TEST: return &c.raster.alpha_test;
+    case GL_COLOR_LOGIC_OP: return &c.raster.color_logic_op;
+    case GL_INDEX_LOGIC_OP: return &c.raster.index_logic_op;  // = GL 1.0's GL_LOGIC_OP
+    case GL_POLYGON_STIPPLE: return &c.raster.polygon_stipple;
+    case GL_FOG: return &c.fog.enabled;
     case GL_TEXTURE_2D: return &c.textures.enabled_2d;
     case GL_POINT_SMOOTH: return &c.inert.point_smooth;
     case GL_LINE_SMOOTH: return &c.inert.line_smooth;

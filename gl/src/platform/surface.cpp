@@ -71,13 +71,9 @@ void Surface::bind(GlContext& c) {
   c.surface = this;
   c.double_buffered = config_.double_buffered;
   bound_.push_back(&c);
-  if (!c.ever_current) {
-    // GLX 1.4 section 3.3.7 (EGL 1.5 section 3.7.3): the first binding sets the viewport (and
-    // the scissor box) to the drawable's size.
-    c.raster.viewport.width = width_;
-    c.raster.viewport.height = height_;
-    c.ever_current = true;
-  }
+  // GLX 1.4 section 3.3.7 (EGL 1.5 section 3.7.3): the first binding sets the viewport and
+  // the scissor box to the drawable's size.
+  if (!c.ever_current) set_initial_window_state(c, width_, height_);
 }
 
 void Surface::unbind(GlContext& c) {
