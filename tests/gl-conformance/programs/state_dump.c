@@ -35,10 +35,6 @@ static const GLenum kNotYet[] = {
   GL_PIXEL_MAP_S_TO_S_SIZE, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_DISTANCE,
   GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID,
   GL_CURRENT_RASTER_TEXTURE_COORDS, GL_ACCUM_CLEAR_VALUE,
-  /* alpha test, fog, logic op, scissor, polygon stipple */
-  GL_ALPHA_TEST, GL_ALPHA_TEST_FUNC, GL_ALPHA_TEST_REF, GL_FOG, GL_FOG_COLOR, GL_FOG_DENSITY,
-  GL_FOG_END, GL_FOG_INDEX, GL_FOG_MODE, GL_FOG_START, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP,
-  GL_LOGIC_OP_MODE, GL_SCISSOR_BOX, GL_SCISSOR_TEST, GL_POLYGON_STIPPLE,
   /* points, lines, polygon modes, clip planes */
   GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT, GL_LINE_WIDTH, GL_LINE_WIDTH_GRANULARITY,
   GL_LINE_WIDTH_RANGE, GL_POINT_SIZE, GL_POINT_SIZE_GRANULARITY, GL_POINT_SIZE_RANGE,
@@ -234,6 +230,22 @@ static void change_state(void) {
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, -2.0f);
   glDisable(GL_DITHER);
+  glEnable(GL_ALPHA_TEST);
+  glAlphaFunc(GL_GEQUAL, 0.3f);
+  glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, GL_EXP2);
+  glFogf(GL_FOG_DENSITY, 0.7f);
+  glFogf(GL_FOG_START, -2.5f);
+  glFogf(GL_FOG_END, 11.0f);
+  glFogf(GL_FOG_INDEX, 3.0f);
+  GLfloat fog_color[] = {0.2f, 1.5f, -0.5f, 0.6f};
+  glFogfv(GL_FOG_COLOR, fog_color);
+  glEnable(GL_COLOR_LOGIC_OP);
+  glEnable(GL_INDEX_LOGIC_OP);
+  glLogicOp(GL_OR_REVERSE);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(7, -3, 50, 60);
+  glEnable(GL_POLYGON_STIPPLE);
   glHint(GL_PERSPECTIVE_CORRECTION_HINT, GL_NICEST);
   glHint(GL_POINT_SMOOTH_HINT, GL_FASTEST);
   glHint(GL_LINE_SMOOTH_HINT, GL_NICEST);
@@ -289,6 +301,11 @@ int main(int argc, char** argv) {
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_COLOR_MATERIAL);
+  glDisable(GL_ALPHA_TEST);
+  glDisable(GL_FOG);
+  glDisable(GL_COLOR_LOGIC_OP);
+  glDisable(GL_SCISSOR_TEST);
+  glDisable(GL_POLYGON_STIPPLE);
   glDisableClientState(GL_VERTEX_ARRAY);
   glDisableClientState(GL_COLOR_ARRAY);
   glDisableClientState(GL_TEXTURE_COORD_ARRAY);
