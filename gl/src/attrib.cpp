@@ -136,6 +136,26 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.blend_src = s.blend_src;
   d.blend_dst = s.blend_dst;
   d.dither = s.dither;
+  d.alpha_test = s.alpha_test;
+  d.alpha_func = s.alpha_func;
+  d.alpha_ref = s.alpha_ref;
+  d.color_logic_op = s.color_logic_op;
+  d.index_logic_op = s.index_logic_op;
+  d.logic_op = s.logic_op;
+}
+
+// GL_FOG_BIT (table 6.9's fog rows): the enable, mode, density, start, end, index and colour.
+void restore_fog(GlContext& c, const AttribRecord& r) { c.fog = r.fog; }
+
+// GL_SCISSOR_BIT (table 6.17): the enable and the box.
+void restore_scissor(GlContext& c, const AttribRecord& r) {
+  RasterState& d = c.raster;
+  const RasterState& s = r.raster;
+  d.scissor_test = s.scissor_test;
+  d.scissor_x = s.scissor_x;
+  d.scissor_y = s.scissor_y;
+  d.scissor_width = s.scissor_width;
+  d.scissor_height = s.scissor_height;
 }
 
 // GL_CURRENT_BIT (table 6.5). The colour material does not follow the popped colour (as in
@@ -178,6 +198,7 @@ void restore_polygon(GlContext& c, const AttribRecord& r) {
   c.inert.offset_point = r.inert.offset_point;
   c.inert.offset_line = r.inert.offset_line;
   c.raster.polygon_offset_fill = r.raster.polygon_offset_fill;
+  c.raster.polygon_stipple = r.raster.polygon_stipple;  // the enable (table 6.12)
 }
 
 void restore_stencil(GlContext& c, const AttribRecord& r) {
@@ -219,6 +240,7 @@ void exec::PushAttrib(GlContext& c, GLbitfield mask) {
   r.raster = c.raster;
   r.inert = c.inert;
   r.textures = c.textures;
+  r.fog = c.fog;
   save_enables(c, r);
   if (mask & GL_TEXTURE_BIT) save_textures(c, r);
   r.hints = c.hints;
@@ -239,12 +261,15 @@ void exec::PopAttrib(GlContext& c) {
   if (m & GL_ENABLE_BIT) {
     restore_enables(c, r, [](GLenum cap) { return cap < GL_LIGHT0 || cap >= GLenum(GL_LIGHT0 + kMaxLights); });
   }
+  if (m & GL_FOG_BIT) restore_fog(c, r);
   if (m & GL_HINT_BIT) restore_hints(c, r);
   if (m & GL_LIGHTING_BIT) restore_lighting(c, r);
   if (m & GL_LINE_BIT) restore_line(c, r);
   if (m & GL_LIST_BIT) c.lists.base = r.list_base;
   if (m & GL_POINT_BIT) restore_point(c, r);
   if (m & GL_POLYGON_BIT) restore_polygon(c, r);
+  if (m & GL_POLYGON_STIPPLE_BIT) c.raster.stipple = r.raster.stipple;
+  if (m & GL_SCISSOR_BIT) restore_scissor(c, r);
   if (m & GL_STENCIL_BUFFER_BIT) restore_stencil(c, r);
   if (m & GL_TRANSFORM_BIT) restore_transform(c, r);
   if (m & GL_TEXTURE_BIT) restore_textures(c, r);

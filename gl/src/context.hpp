@@ -306,6 +306,7 @@ struct AttribRecord {
   LightingState lighting;
   RasterState raster;
   InertCaps inert;
+  FogSettings fog;
   TextureState textures;  // environment; the bindings are restored through exec::BindTexture
   std::vector<std::pair<GLenum, bool>> enables;  // every accepted capability
   // Per texture target: the bound name and the parameters of the bound and default objects.

@@ -35,9 +35,6 @@ static const GLenum kNotYet[] = {
   GL_PIXEL_MAP_S_TO_S_SIZE, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_DISTANCE,
   GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID,
   GL_CURRENT_RASTER_TEXTURE_COORDS, GL_ACCUM_CLEAR_VALUE,
-  GL_ALPHA_TEST, GL_ALPHA_TEST_FUNC, GL_ALPHA_TEST_REF, GL_FOG, GL_FOG_COLOR, GL_FOG_DENSITY,
-  GL_FOG_END, GL_FOG_INDEX, GL_FOG_MODE, GL_FOG_START, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP,
-  GL_LOGIC_OP_MODE, GL_SCISSOR_BOX, GL_SCISSOR_TEST, GL_POLYGON_STIPPLE,
   GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT, GL_LINE_WIDTH, GL_LINE_WIDTH_GRANULARITY,
   GL_LINE_WIDTH_RANGE, GL_POINT_SIZE, GL_POINT_SIZE_GRANULARITY, GL_POINT_SIZE_RANGE,
   GL_POLYGON_MODE, GL_MAX_CLIP_PLANES, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
@@ -99,7 +96,8 @@ static void dump(const char* phase) {
     GL_BLEND, GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_LIGHT0, GL_LIGHT1,
     GL_LIGHT7, GL_LIGHTING, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
-    GL_STENCIL_TEST, GL_TEXTURE_2D, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY,
+    GL_STENCIL_TEST, GL_TEXTURE_2D, GL_ALPHA_TEST, GL_FOG, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP,
+    GL_SCISSOR_TEST, GL_POLYGON_STIPPLE, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY,
     GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY,
   };
   for (size_t k = 0; k < sizeof kCaps / sizeof kCaps[0]; ++k) {
@@ -123,6 +121,19 @@ static void dump(const char* phase) {
   print_floats(phase, "env color", v, 4);
   glGetTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, v);
   print_floats(phase, "env mode", v, 1);
+  {
+    /* The stipple pattern, read through whatever pack state the client groups left, into a
+     * buffer large enough for any of them; two sums of its bytes. */
+    static GLubyte pattern[8192];
+    memset(pattern, 0, sizeof pattern);
+    glGetPolygonStipple(pattern);
+    GLfloat sums[2] = {0, 0};
+    for (size_t i = 0; i < sizeof pattern; ++i) {
+      sums[0] += (GLfloat)pattern[i];
+      sums[1] += (GLfloat)(pattern[i] * (i % 61));
+    }
+    print_floats(phase, "stipple", sums, 2);
+  }
   static const GLenum kLightParams[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_POSITION,
                                         GL_SPOT_DIRECTION, GL_SPOT_CUTOFF, GL_LINEAR_ATTENUATION};
   for (size_t k = 0; k < sizeof kLightParams / sizeof kLightParams[0]; ++k) {
@@ -212,6 +223,27 @@ static void set_state(int k) {
   glHint(GL_POLYGON_SMOOTH_HINT, k ? GL_FASTEST : GL_NICEST);
   glHint(GL_FOG_HINT, k ? GL_NICEST : GL_FASTEST);
   glListBase(100u + (GLuint)k);
+  if (k) glEnable(GL_ALPHA_TEST); else glDisable(GL_ALPHA_TEST);
+  glAlphaFunc(k ? GL_GREATER : GL_LEQUAL, a);
+  if (k) glDisable(GL_FOG); else glEnable(GL_FOG);
+  glFogi(GL_FOG_MODE, k ? GL_LINEAR : GL_EXP2);
+  glFogf(GL_FOG_DENSITY, 2.0f * a);
+  glFogf(GL_FOG_START, -a);
+  glFogf(GL_FOG_END, 10.0f + a);
+  glFogf(GL_FOG_INDEX, 1.0f + (GLfloat)k);
+  glFogfv(GL_FOG_COLOR, light);
+  if (k) glEnable(GL_COLOR_LOGIC_OP); else glDisable(GL_COLOR_LOGIC_OP);
+  if (k) glDisable(GL_INDEX_LOGIC_OP); else glEnable(GL_INDEX_LOGIC_OP);
+  glLogicOp(k ? GL_XOR : GL_NAND);
+  if (k) glEnable(GL_SCISSOR_TEST); else glDisable(GL_SCISSOR_TEST);
+  glScissor(1 + k, -2, 30 - k, 40 + k);
+  if (k) glDisable(GL_POLYGON_STIPPLE); else glEnable(GL_POLYGON_STIPPLE);
+  {
+    /* Read through the unpack state of the moment (row length, skips): more than 128 bytes. */
+    static GLubyte pattern[1024];
+    for (int i = 0; i < 1024; ++i) pattern[i] = (GLubyte)(i * (3 + 2 * k) + k);
+    glPolygonStipple(pattern);
+  }
   glBindTexture(GL_TEXTURE_2D, textures[k]);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, k ? GL_LINEAR : GL_NEAREST_MIPMAP_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, k ? GL_NEAREST : GL_LINEAR);
