@@ -50,6 +50,8 @@ static GLuint names[4];
 
 /* Wrong arguments, command by command (alphabetical). */
 static void wrong_arguments(void) {
+  E(glAlphaFunc(BAD, 0.5f));
+  E(glAlphaFunc(GL_LEQUAL, 2.0f));
   E(glArrayElement(-1));
   E(glBindTexture(BAD, 1));
   E(glBindTexture(GL_TEXTURE_2D, 1));
@@ -89,6 +91,13 @@ static void wrong_arguments(void) {
   E(glEnableClientState(GL_LIGHTING));
   E(glEnd());
   E(glEndList());
+  E(glFogf(BAD, 1.0f));
+  E(glFogf(GL_FOG_DENSITY, -1.0f));
+  E(glFogf(GL_FOG_MODE, (GLfloat)BAD));
+  E(glFogi(GL_FOG_MODE, GL_LINEAR));
+  E(glFogfv(BAD, kFloats));
+  E(glFogiv(GL_FOG_MODE, kInts));
+  E(glFogiv(GL_FOG_COLOR, kInts));
   E(glFrustum(-1, 1, -1, 1, 0, 10));
   E(glFrustum(-1, 1, -1, 1, 2, 1));
   E(glFrustum(1, 1, -1, 1, 1, 10));
@@ -113,6 +122,7 @@ static void wrong_arguments(void) {
   E(glGetTexEnviv(GL_TEXTURE_ENV, BAD, ibuf));
   E(glGetTexParameterfv(BAD, GL_TEXTURE_MIN_FILTER, fbuf));
   E(glGetTexParameteriv(GL_TEXTURE_2D, BAD, ibuf));
+  E(glGetPolygonStipple(pixels));
   E(glHint(BAD, GL_NICEST));
   E(glHint(GL_FOG_HINT, BAD));
   E(glIndexPointer(BAD, 0, kFloats));
@@ -122,6 +132,9 @@ static void wrong_arguments(void) {
   E(glInterleavedArrays(GL_V3F, -1, kFloats));
   E(glIsEnabled(BAD));
   E(glIsEnabled(GL_FRONT));
+  E(glLogicOp(BAD));
+  E(glLogicOp(GL_CLEAR - 1));
+  E(glLogicOp(GL_SET + 1));
   E(glLightModelf(BAD, 1.0f));
   E(glLightModelf(GL_LIGHT_MODEL_AMBIENT, 1.0f));
   E(glLightModeli(GL_LIGHT_MODEL_COLOR_CONTROL, BAD));
@@ -151,6 +164,7 @@ static void wrong_arguments(void) {
   E(glOrtho(1, 1, 0, 1, 0, 1));
   E(glOrtho(0, 1, 0, 1, 1, 1));
   E(glPixelStoref(BAD, 1.0f));
+  E(glPolygonStipple(kUbytes));
   E(glPixelStorei(GL_PACK_ALIGNMENT, 3));
   E(glPixelStorei(GL_UNPACK_ALIGNMENT, 0));
   E(glPixelStorei(GL_UNPACK_ROW_LENGTH, -1));
@@ -162,6 +176,9 @@ static void wrong_arguments(void) {
   E(glReadPixels(0, 0, 1, 1, BAD, GL_UNSIGNED_BYTE, pixels));
   E(glReadPixels(0, 0, 1, 1, GL_RGBA, BAD, pixels));
   E(glReadPixels(0, 0, 1, 1, GL_RGBA, GL_BITMAP, pixels));
+  E(glScissor(0, 0, -1, 4));
+  E(glScissor(-5, -5, 4, -1));
+  E(glScissor(-5, -5, 0, 0));
   E(glShadeModel(BAD));
   E(glStencilFunc(BAD, 0, 0));
   E(glStencilOp(BAD, GL_KEEP, GL_KEEP));
@@ -235,7 +252,16 @@ static void stacks_and_order(void) {
 
 /* Every implemented command between glBegin and glEnd (section 2.6.3). */
 static void inside_begin_end(void) {
+  B(glAlphaFunc(GL_LESS, 0.5f));
   B(glArrayElement(0));
+  B(glFogf(GL_FOG_START, 1.0f));
+  B(glFogi(GL_FOG_MODE, GL_EXP));
+  B(glFogfv(GL_FOG_COLOR, kFloats));
+  B(glFogiv(GL_FOG_COLOR, kInts));
+  B(glGetPolygonStipple(pixels));
+  B(glLogicOp(GL_XOR));
+  B(glPolygonStipple(kUbytes));
+  B(glScissor(0, 0, 4, 4));
   B(glBindTexture(GL_TEXTURE_2D, 0));
   B(glBlendFunc(GL_ONE, GL_ZERO));
   B(glCallList(5));
