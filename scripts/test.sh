@@ -3,7 +3,9 @@
 # then the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
 # the test program (every render there draws on threads) under ThreadSanitizer (build-tsan/),
 # and every fuzz target: its past findings, then a fixed, repeatable number of executions
-# (build-fuzz/; about 40 s each); any sanitizer report or crash fails.
+# (build-fuzz/; about 40 s each); any sanitizer report or crash fails. At the end, even after a
+# failure, it prints each stage's wall time and the CPU time of its processes
+# (docs/robustness.md).
 #
 #   scripts/test.sh           everything (what CI runs)
 #   scripts/test.sh --quick   the normal build's tests only
@@ -17,9 +19,73 @@ case "${1:-}" in
   *) echo "usage: scripts/test.sh [--quick]" >&2; exit 2 ;;
 esac
 
-scripts/setup.sh --build
-ctest --test-dir build --output-on-failure -j "$(nproc)"
-[ "$quick" = 1 ] && exit 0
+# --- stage times -----------------------------------------------------------------------------
+# Wall time, and the user + system time of every process the stage ran (from this shell's
+# cutime/cstime): on a shared machine the CPU time shows a regression that the wall time hides.
+stage_names=()
+stage_walls=()
+stage_cpus=()
+stage_results=()
+current_stage=""
+stage_wall_start=0
+stage_cpu_start=0
+clock_ticks=$(getconf CLK_TCK)
+script_start=$SECONDS
+
+children_cpu_ticks() {  # user + system ticks of this shell's finished children
+  local stat
+  stat=$(< "/proc/$$/stat")
+  stat=${stat##*) }
+  local fields
+  read -ra fields <<< "$stat"
+  echo $((fields[13] + fields[14]))
+}
+
+stage_begin() {  # NAME
+  current_stage="$1"
+  stage_wall_start=$SECONDS
+  stage_cpu_start=$(children_cpu_ticks)
+  echo "test: == $current_stage"
+}
+
+stage_end() {  # RESULT
+  stage_names+=("$current_stage")
+  stage_walls+=($((SECONDS - stage_wall_start)))
+  stage_cpus+=($(( ($(children_cpu_ticks) - stage_cpu_start) / clock_ticks )))
+  stage_results+=("$1")
+  current_stage=""
+}
+
+stage() {  # NAME COMMAND... : runs the command as a stage (set -e ends the script on failure)
+  stage_begin "$1"
+  shift
+  "$@"
+  stage_end ok
+}
+
+mmss() { printf '%d:%02d' $(($1 / 60)) $(($1 % 60)); }
+
+print_stage_times() {
+  local status=$?
+  [ -z "$current_stage" ] || stage_end "FAILED (exit $status)"
+  echo
+  echo "test: stage times (wall; CPU = user + system time of the stage's processes)"
+  printf '  %-46s %8s %8s  %s\n' stage wall CPU result
+  local i cpu_total=0
+  for i in "${!stage_names[@]}"; do
+    printf '  %-46s %8s %8s  %s\n' "${stage_names[$i]}" "$(mmss "${stage_walls[$i]}")" \
+      "$(mmss "${stage_cpus[$i]}")" "${stage_results[$i]}"
+    cpu_total=$((cpu_total + stage_cpus[i]))
+  done
+  printf '  %-46s %8s %8s  %s\n' total "$(mmss $((SECONDS - script_start)))" "$(mmss $cpu_total)" \
+    "$([ "$status" = 0 ] && echo ok || echo "FAILED (exit $status)")"
+  exit "$status"
+}
+trap print_stage_times EXIT
+trap 'exit 130' INT TERM
+
+# --- the stages ------------------------------------------------------------------------------
+jobs=$(nproc)
 
 sanitized_build() {  # DIR FLAGS [TARGET...]
   local dir="$1" flags="$2"
@@ -30,19 +96,29 @@ sanitized_build() {  # DIR FLAGS [TARGET...]
   if [ $# -gt 0 ]; then cmake --build "$dir" --target "$@"; else cmake --build "$dir"; fi
 }
 
-echo "test: AddressSanitizer + UndefinedBehaviorSanitizer"
-sanitized_build build-asan "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-# Leaks inside Mesa's libraries and reports from interceptors Mesa calls (the conformance
-# reference) are suppressed; nothing of ours.
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:suppressions=$PWD/tests/sanitizers/asan.supp"
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
-ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
+sanitizer_tests() {
+  # Leaks inside Mesa's libraries and reports from interceptors Mesa calls (the conformance
+  # reference) are suppressed; nothing of ours.
+  # (Exported: the later stages run with them too.)
+  export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:suppressions=$PWD/tests/sanitizers/asan.supp"
+  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+  export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+  ctest --test-dir build-asan --output-on-failure -j "$jobs"
+}
 
-echo "test: ThreadSanitizer (the unit, rendering and differential tests: all draw on threads; GL clears ahead)"
-sanitized_build build-tsan "-fsanitize=thread" shadelab_tests gl_clear_ahead
-TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" build-tsan/tests/shadelab_tests
-TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1" build-tsan/tests/steady/gl_clear_ahead
+tsan_run() {
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+  build-tsan/tests/shadelab_tests
+  build-tsan/tests/steady/gl_clear_ahead
+}
 
-echo "test: fuzzing: past findings, then a repeatable run per target (fuzz/run.sh --ci; docs/robustness.md)"
-fuzz/run.sh --ci
+stage "set-up and build (build/)" scripts/setup.sh --build
+stage "tests (build/)" ctest --test-dir build --output-on-failure -j "$jobs"
+[ "$quick" = 1 ] && exit 0
+stage "sanitizer build (build-asan/)" sanitized_build build-asan \
+  "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+stage "sanitizer tests (ASan + UBSan)" sanitizer_tests
+stage "ThreadSanitizer build (build-tsan/)" sanitized_build build-tsan "-fsanitize=thread" \
+  shadelab_tests gl_clear_ahead
+stage "ThreadSanitizer run" tsan_run
+stage "fuzzing (fuzz/run.sh --ci, build-fuzz/)" fuzz/run.sh --ci
