@@ -200,10 +200,39 @@ struct PolygonStipple {
   std::array<std::uint32_t, 32> rows{};
 };
 
-/// Per-fragment state for one draw. The operations run in GL's order (GL 1.1 chapter 4):
-/// pixel ownership (the framebuffer), polygon stipple (rasterization), scissor, alpha test,
-/// stencil test, depth test, blending or logic op, colour mask. Dithering is never done (as
-/// llvmpipe's). Fog belongs to the colour (ShadeState::fog) and comes before all of them.
+/// glPolygonMode for one face (GL 1.1 section 3.5.4): filled, or its edges drawn as lines,
+/// or its vertices as points.
+enum class PolygonMode : std::uint8_t { kFill, kLine, kPoint };
+
+/// How lines are drawn (GL 1.1 section 3.4).
+struct LineState {
+  float width = 1.0f;  ///< glLineWidth, pixels; aliased lines round it (at least 1)
+  bool smooth = false;   ///< GL_LINE_SMOOTH: coverage multiplies the fragment's alpha
+  bool stipple = false;  ///< GL_LINE_STIPPLE
+  std::uint16_t pattern = 0xffff;  ///< glLineStipple: bit i draws pixel i of 16
+  std::uint16_t factor = 1;        ///< glLineStipple's repeat, 1 to 256
+};
+
+/// How points are drawn (GL 1.1 section 3.3).
+struct PointState {
+  float size = 1.0f;    ///< glPointSize, pixels; aliased points round it (at least 1)
+  bool smooth = false;  ///< GL_POINT_SMOOTH: coverage multiplies the fragment's alpha
+};
+
+/// User clip planes (GL 1.1 section 2.11) in EYE space: a point p is inside plane i when
+/// dot(plane[i], p) >= 0. Planes whose bit is not set in `enabled` are ignored.
+struct ClipPlanes {
+  static constexpr int kCount = 8;
+  std::array<glm::vec4, kCount> eye{};
+  std::uint8_t enabled = 0;
+};
+
+/// Per-fragment state for one draw, and the rasterization rules before it: culling, facing,
+/// polygon modes, line and point state, user clip planes. The operations run in GL's order
+/// (GL 1.1 chapter 4): pixel ownership (the framebuffer), polygon stipple (rasterization, of
+/// polygons only), scissor, alpha test, stencil test, depth test, blending or logic op, colour
+/// mask. Dithering is never done (as llvmpipe's). Fog belongs to the colour (ShadeState::fog)
+/// and comes before all of them.
 struct FragmentState {
   CullMode cull = CullMode::kNone;
   bool front_ccw = true;  ///< glFrontFace(GL_CCW): counter-clockwise in window space is front
@@ -214,11 +243,17 @@ struct FragmentState {
   bool color_mask[4] = {true, true, true, true};
   StencilState stencil;
   bool polygon_offset = false;  ///< glPolygonOffset for filled polygons
+  bool offset_line = false;     ///< ... for polygons drawn as lines (GL_POLYGON_OFFSET_LINE)
+  bool offset_point = false;    ///< ... for polygons drawn as points (GL_POLYGON_OFFSET_POINT)
   float offset_factor = 0.0f, offset_units = 0.0f;
   ScissorState scissor;
   AlphaTestState alpha_test;
   LogicOpState logic_op;
   PolygonStipple stipple;
+  PolygonMode front_mode = PolygonMode::kFill, back_mode = PolygonMode::kFill;
+  LineState line;
+  PointState point;
+  ClipPlanes clip;
   /// When set, fragments passing the depth test are captured (with `blend`) instead of being
   /// written; depth is not written. For exact transparency.
   FragmentCapture* capture = nullptr;
@@ -277,6 +312,27 @@ struct ShadeState {
   FogState fog;
 };
 
+/// One line segment of a draw: its two vertices; the second provokes (flat shading takes its
+/// colour, GL 1.1 section 2.13.7). With kRestartStipple, the line stipple pattern starts
+/// again at this segment (each segment of GL_LINES, the first of a strip or loop).
+struct LineSegment {
+  static constexpr std::uint32_t kRestartStipple = 1;
+  std::uint32_t v[2];
+  std::uint32_t flags = kRestartStipple;
+};
+
+/// Per-triangle flags for polygons drawn in GL_LINE / GL_POINT mode (VertexInput::
+/// triangle_flags): which of its edges are edges of the polygon it comes from, with the edge
+/// flag of their first vertex set (GL 1.1 section 2.6.2), and whether the line stipple
+/// pattern starts again with it.
+enum TriangleFlag : std::uint8_t {
+  kTriangleEdge01 = 1,  ///< the edge from vertex 0 to vertex 1 (in point mode: vertex 0)
+  kTriangleEdge12 = 2,  ///< ... from vertex 1 to vertex 2 (vertex 1)
+  kTriangleEdge20 = 4,  ///< ... from vertex 2 to vertex 0 (vertex 2)
+  kTriangleEdges = 7,
+  kTriangleRestartStipple = 8,
+};
+
 /// Vertices in eye space and the triangles over them.
 /// - `normals` (unit, eye space) are needed when lighting.
 /// - `colors`: per-vertex colours used when lighting is off (empty: `constant_color`).
@@ -294,6 +350,15 @@ struct VertexInput {
   std::span<const float> fog_coords;
   glm::vec4 constant_color{1.0f};
   std::span<const Triangle> triangles;  ///< last index of each is the provoking vertex
+  /// Per triangle, TriangleFlag bits for the polygon modes (empty: every edge drawn, the stipple
+  /// restarting at each triangle).
+  std::span<const std::uint8_t> triangle_flags;
+  std::span<const LineSegment> lines;  ///< drawn after the triangles (a draw has one kind)
+  std::span<const std::uint32_t> points;
+  /// Line stipple across draws: in, the pattern position for a first segment that does not
+  /// restart it; out, the position after the last segment (a long GL_LINE_STRIP drawn in
+  /// parts). Null: 0 in, nothing out.
+  std::uint32_t* stipple_counter = nullptr;
 };
 
 /// Counters and timings for `shadelab render --stats`.
@@ -400,11 +465,14 @@ class PipelineContext {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Draws triangles into `fb`: vertex lighting (flat/Gouraud), projection, homogeneous clipping
-/// against the view volume, viewport mapping, rasterization with the top-left fill rule at
-/// pixel centres, depth/stencil tests, per-pixel lighting (Phong), blending. `projection` maps
-/// eye space to clip space. With `fast`, the tiled, multithreaded SIMD pipeline draws instead
-/// of the reference path: the same coverage and depth, colours within 1/255.
+/// Draws the triangles, lines and points of `vertices` into `fb`: vertex lighting
+/// (flat/Gouraud), projection, homogeneous clipping against the view volume and the user clip
+/// planes, viewport mapping, facing, culling and the polygon modes, rasterization (triangles
+/// with the top-left fill rule at pixel centres; lines and points by llvmpipe's rules,
+/// docs/rasterization.md), depth/stencil tests, per-pixel lighting (Phong), blending.
+/// `projection` maps eye space to clip space. With `fast`, the tiled, multithreaded SIMD
+/// pipeline draws instead of the reference path: the same coverage and depth, colours within
+/// 1/255.
 void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
                     const FragmentState& fragment, const ShadeState& shade,
                     const VertexInput& vertices, RenderStats* stats = nullptr,

@@ -15,6 +15,7 @@
 
 #include "fast/context.hpp"
 #include "fast/plan.hpp"
+#include "fast/prims.hpp"
 #include "fast/raster.hpp"
 #include "fast/setup.hpp"
 #include "fast/vertex_stage.hpp"
@@ -181,6 +182,7 @@ void vertex_stage(PipelineContext::Impl& impl, DrawJob& job) {
   const std::size_t n = job.in->positions.size();
   job.vertices.resize(n);
   job.outcodes.resize(n);
+  job.user_outcodes.resize(job.plan.user_plane_count ? n : 0);
   job.varyings.resize(n * std::size_t(job.plan.layout.count));
   int blocks = int((n + kVertexBlock - 1) / kVertexBlock);
   impl.pool.run(blocks, [&](int b, int worker) {
@@ -189,19 +191,29 @@ void vertex_stage(PipelineContext::Impl& impl, DrawJob& job) {
   });
 }
 
+// Sets up the draw's items (its triangles, then lines, then points) in contiguous chunks, each
+// on one thread; filled triangles by setup_range, the rest by setup_prims.
 void setup_stage(PipelineContext::Impl& impl, DrawJob& job) {
-  const std::size_t n = job.triangles.size();
+  const std::size_t n = job.plan.prims ? setup_items(*job.in) : job.triangles.size();
+  const std::size_t filled = job.plan.prims && detail::PrimAssembler::unfilled(*job.frag) ? 0 : job.triangles.size();
   job.tiles_x = (job.fb->width + kTileSize - 1) / kTileSize;
   job.tiles_y = (job.fb->height + kTileSize - 1) / kTileSize;
   const std::size_t tiles = std::size_t(job.tiles_x) * std::size_t(job.tiles_y);
-  job.chunk_count = n >= kParallelSetup ? impl.pool.size() : 1;
+  const bool sequential = job.plan.prims && sequential_setup(job);
+  job.chunk_count = n >= kParallelSetup && !sequential ? impl.pool.size() : 1;
   if (job.chunks.size() < std::size_t(job.chunk_count)) job.chunks.resize(std::size_t(job.chunk_count));
+  std::uint32_t stipple = job.in->stipple_counter ? *job.in->stipple_counter : 0u;
   impl.pool.run(job.chunk_count, [&](int c, int) {
     SetupChunk& chunk = job.chunks[std::size_t(c)];
     reset_chunk(chunk, tiles);
-    setup_range(job, chunk, n * std::size_t(c) / std::size_t(job.chunk_count),
-                n * std::size_t(c + 1) / std::size_t(job.chunk_count));
+    const std::size_t begin = n * std::size_t(c) / std::size_t(job.chunk_count);
+    const std::size_t end = n * std::size_t(c + 1) / std::size_t(job.chunk_count);
+    if (begin < filled) setup_range(job, chunk, begin, std::min(end, filled));
+    std::uint32_t counter = stipple;  // only one chunk when the stipple runs on
+    if (job.plan.prims) setup_prims(job, chunk, begin, end, counter);
+    if (job.chunk_count == 1) stipple = counter;
   });
+  if (job.in->stipple_counter) *job.in->stipple_counter = stipple;
   impl.tiles.clear();
   for (std::size_t t = 0; t < tiles; ++t) {
     for (int c = 0; c < job.chunk_count; ++c) {
@@ -272,7 +284,7 @@ void raster_tiles(PipelineContext::Impl& impl, Framebuffer& fb, std::span<const 
 bool deferrable(const PipelineContext::Impl& impl, const FragmentState& frag, const ShadeState& shade,
                 const VertexInput& in, const RenderStats* stats) {
   return impl.deferred && !stats && !frag.capture && !shade.texture && shade.shadow_maps.empty() &&
-         in.triangles.size() <= kMaxDeferredTriangles && in.positions.size() <= kMaxDeferredVertices;
+         setup_items(in) <= kMaxDeferredTriangles && in.positions.size() <= kMaxDeferredVertices;
 }
 
 void add_counts(RenderStats& to, const RenderStats& from) {

@@ -4,6 +4,7 @@
 // setup.cpp and raster.cpp.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -14,6 +15,7 @@
 #include "fast/lighting_setup.hpp"
 #include "pipeline/fragment_ops.hpp"
 #include "pipeline/stages.hpp"
+#include "raster/prims.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/pipeline.hpp"
 
@@ -98,14 +100,24 @@ struct DrawPlan {
   /// The pixels a draw may write: the framebuffer, cut by the scissor box (inclusive bounds;
   /// empty when x1 < x0). Setup bins no tile outside it.
   int box_x0 = 0, box_y0 = 0, box_x1 = -1, box_y1 = -1;
+  bool prims = false;            ///< lines, points or unfilled polygons (fast/prims.cpp)
+  /// The enabled user clip planes in clip space (clip.cpp's clip_space_planes).
+  std::array<glm::vec4, ClipPlanes::kCount> user_planes;
+  int user_plane_count = 0;
+  bool coverage = false;         ///< smooth lines or points: alpha times their coverage
   BlockKernel kernel = BlockKernel::kGeneral;
   LightingSetup lighting;
 };
 
-/// One fan triangle of a clipped polygon; indices into its setup chunk's clip vertices.
+/// One fan triangle of a clipped polygon, or a triangle of a line, a point or an unfilled
+/// polygon's piece (raster/prims.hpp); indices into its setup chunk's clip vertices.
 struct ClippedTriangle {
+  static constexpr std::uint32_t kNoCoverage = ~0u;
   std::uint32_t v[3];
   std::uint32_t provoking;  ///< the original triangle's last vertex (a main vertex index)
+  std::uint32_t coverage = kNoCoverage;  ///< a smooth line's or point's, in the chunk's list
+  bool offset = true;  ///< takes glPolygonOffset's fill offset (lines and points have theirs)
+  bool polygon = true;  ///< a polygon's: the polygon stipple applies (not a line's or a point's)
 };
 
 /// Bin entries: a triangle index with these flags.
@@ -119,6 +131,7 @@ struct SetupChunk {
   std::vector<RasterVertex> clip_vertices;
   std::vector<float> clip_varyings;
   std::vector<ClippedTriangle> clipped;
+  std::vector<detail::Coverage> coverage;
   std::vector<detail::ClipVertex> poly, scratch;
   RenderStats stats;
 };
@@ -184,6 +197,8 @@ struct DrawJob {
   detail::ScratchVector<RasterVertex> vertices;
   detail::ScratchVector<float> varyings;       ///< layout.count floats per vertex
   detail::ScratchVector<std::uint8_t> outcodes;  ///< bit k: outside clip plane k (clip.cpp's order)
+  /// With user clip planes: bit k, outside user plane k (clip_outcode's bit 7 + k).
+  detail::ScratchVector<std::uint8_t> user_outcodes;
   // Setup output.
   std::vector<SetupChunk> chunks;
   int chunk_count = 0;

@@ -109,7 +109,15 @@ void make_plan(DrawJob& job) {
   p.alpha_ref = float(detail::unorm8(frag.alpha_test.ref));
   p.exact_colors = p.alpha_test || frag.logic_op.enabled;
   pixel_box(*job.fb, frag, p);
-  p.kernel = kernel_for(p, frag);
+  const VertexInput& in = *job.in;
+  const bool unfilled = detail::PrimAssembler::unfilled(frag);
+  p.prims = unfilled || !in.lines.empty() || !in.points.empty();
+  const bool line_edges = frag.front_mode == PolygonMode::kLine || frag.back_mode == PolygonMode::kLine;
+  const bool point_edges = frag.front_mode == PolygonMode::kPoint || frag.back_mode == PolygonMode::kPoint;
+  p.coverage = (frag.line.smooth && (!in.lines.empty() || (line_edges && !in.triangles.empty()))) ||
+               (frag.point.smooth && (!in.points.empty() || (point_edges && !in.triangles.empty())));
+  p.kernel = p.coverage ? BlockKernel::kGeneral : kernel_for(p, frag);
+  p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);
   if (p.phong) {

@@ -106,7 +106,7 @@ HWY_INLINE void exact_color(const TriSetup& t, const TrianglePlanes& planes, con
 // compares, the bytes a logic op combines), the interpolated colours are the reference's own
 // (flat and uniform colours and the exact planes already are).
 HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, const VD b0[kRows],
-                            const VD b1[kRows], VB f0, VB f1) {
+                            const VD b1[kRows], VB f0, VB f1, const VB* coverage) {
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
@@ -114,16 +114,49 @@ HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlane
     exact_color(t, planes, w, job.frag->logic_op.enabled ? 0 : 3, color);
   }
   if (job.plan.fog) apply_fog(job.plan.fog_params, t, planes, w, color);
+  if (coverage) {  // a smooth line's or point's (Mesa multiplies it in at the very end)
+    color.c[3] = hn::Mul(color.c[3], *coverage);
+    color.clamped = false;
+  }
   return color;
+}
+
+// A smooth line's or point's coverage at the block's pixel centres (raster/prims.cpp's
+// coverage_at, lane by lane: the affine functions in double, the rest in float): the alpha
+// factor, and the lanes a point discards cleared from `bits`.
+HWY_INLINE VB block_coverage(const detail::Coverage& c, int x, int y, unsigned& bits) {
+  const DD dd;
+  const DF df;
+  const DB db;
+  const VD xs = hn::Iota(dd, double(x) + 0.5);
+  VF u[kRows], v[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const VD ys = hn::Set(dd, double(y + r) + 0.5);
+    u[r] = hn::DemoteTo(df, hn::Add(hn::Add(hn::Set(dd, double(c.u0)), hn::Mul(hn::Set(dd, double(c.ux)), xs)),
+                                    hn::Mul(hn::Set(dd, double(c.uy)), ys)));
+    v[r] = hn::DemoteTo(df, hn::Add(hn::Add(hn::Set(dd, double(c.v0)), hn::Mul(hn::Set(dd, double(c.vx)), xs)),
+                                    hn::Mul(hn::Set(dd, double(c.vy)), ys)));
+  }
+  const VB ub = join_rows(df, u[0], u[kRows - 1]), vb = join_rows(df, v[0], v[kRows - 1]);
+  const VB one = hn::Set(db, 1.0f), a = hn::Set(db, c.a);
+  if (c.kind == detail::Coverage::Kind::kLine) {
+    return hn::Mul(clamp_unit(hn::Sub(a, hn::Abs(ub))), clamp_unit(hn::Sub(hn::Set(db, c.b), hn::Abs(vb))));
+  }
+  const VB d = hn::Add(hn::Mul(ub, ub), hn::Mul(vb, vb));
+  bits &= ~block_bits(hn::Lt(one, d));
+  const VB rim = hn::Mul(hn::Set(db, 1.0f / (1.0f - c.a)), hn::Sub(one, d));
+  return hn::IfThenElse(hn::Ge(a, d), rim, one);
 }
 
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour;
 // with the alpha test, the colour first, and depth only for the lanes it keeps (GL 1.1
-// section 4.1.3: the alpha test comes before the stencil and depth tests).
+// section 4.1.3: the alpha test comes before the stencil and depth tests). A smooth line's or
+// point's `coverage` multiplies the colour's alpha before the alpha test sees it.
 template <Path kPath>
 HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
                            GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
-                           const VD b1[kRows], VB f0, VB f1, VB z) {
+                           const VD b1[kRows], VB f0, VB f1, VB z, const VB* coverage) {
   const DF df;
   const FragmentState& fs = *job.frag;
   BlockPixels g;
@@ -131,7 +164,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   unsigned passed = bits;
   Rgba color;
   if (job.plan.alpha_test) {
-    color = block_color(job, t, planes, b0, b1, f0, f1);
+    color = block_color(job, t, planes, b0, b1, f0, f1, coverage);
     passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
   }
   if (fs.depth_test && passed) {
@@ -142,16 +175,16 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   counts.fragments += unsigned(std::popcount(bits));
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
-    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1);
+    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1, coverage);
     write_colors(fs, color, passed, g.color);
   }
   if constexpr (kPath == Path::kEdge) close_block(job, g);
 }
 
-// The lanes of the block at (x, y) that the scissor box and the polygon stipple keep
-// (fragment_ops.hpp's pixel_kept). Blocks start at multiples of their width, which divides
+// The lanes of the block at (x, y) that the scissor box and the polygon stipple (of polygons
+// only) keep (fragment_ops.hpp's pixel_kept). Blocks start at multiples of their width, which divides
 // 32: a row's lanes are consecutive bits of one stipple row.
-HWY_INLINE unsigned kept_lanes(const DrawJob& job, int x, int y, int lanes) {
+HWY_INLINE unsigned kept_lanes(const DrawJob& job, const TriSetup& t, int x, int y, int lanes) {
   const DrawPlan& p = job.plan;
   const unsigned all = (1u << lanes) - 1u;
   unsigned columns = all;
@@ -163,7 +196,7 @@ HWY_INLINE unsigned kept_lanes(const DrawJob& job, int x, int y, int lanes) {
   for (int r = 0; r < kRows; ++r) {
     const int row = y + r;
     unsigned m = row < p.box_y0 || row > p.box_y1 ? 0u : columns;
-    if (stipple.enabled) m &= (stipple.rows[std::size_t(row & 31)] >> (x & 31)) & all;
+    if (stipple.enabled && t.polygon) m &= (stipple.rows[std::size_t(row & 31)] >> (x & 31)) & all;
     kept |= m << (r * lanes);
   }
   return kept;
@@ -222,7 +255,7 @@ void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x,
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
-template <Path kPath, BlockKernel kKernel>
+template <Path kPath, BlockKernel kKernel, bool kCoverage>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
                       GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
   const DD dd;
@@ -237,7 +270,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   if (!bits) return;
   if constexpr (kKernel == BlockKernel::kGeneral) {  // the kernels never mask lanes
     if (job.plan.lane_masks) {
-      bits &= kept_lanes(job, x, y, lanes);
+      bits &= kept_lanes(job, t, x, y, lanes);
       if (!bits) return;
     }
   }
@@ -251,6 +284,11 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     for (int r = 1; r < kRows; ++r) {
       if (y + r >= job.fb->height) bits &= (1u << (r * lanes)) - 1u;
     }
+    if (!bits) return;
+  }
+  VB coverage;
+  if constexpr (kCoverage) {  // smooth lines and points (the scalar path applies it per fragment)
+    coverage = block_coverage(*t.coverage, x, y, bits);
     if (!bits) return;
   }
   const VD inv_area = hn::Set(dd, t.inv_area);
@@ -272,11 +310,14 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
     kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else {
-    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
+    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z,
+                      kCoverage ? &coverage : nullptr);
   }
 }
 
-template <Path kPath, BlockKernel kKernel = BlockKernel::kGeneral>
+// kCoverage: a smooth line's or point's triangle on the SIMD path (draws with them take the
+// general path, never a kernel).
+template <Path kPath, BlockKernel kKernel = BlockKernel::kGeneral, bool kCoverage = false>
 void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior) {
   const DD dd;
   const int lanes = int(hn::Lanes(dd));
@@ -311,7 +352,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
       }
     }
     for (int x = gx0; x <= t.x1; x += lanes) {
-      block<kPath, kKernel>(job, t, planes, ws, counts, x, y, interior, e, thr);
+      block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr);
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
         #pragma GCC unroll 4
@@ -391,9 +432,33 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   }
 }
 
+// A tile of a draw with smooth lines or points: their triangles take the coverage path, the
+// others raster_triangle. Out of line, so that RasterTile's own loop (the triangles' hot
+// path, raster_triangle inlined) is compiled as it is without it.
+[[gnu::noinline]] void raster_tile_coverage(const DrawJob& job, int tile, WorkerScratch& ws) {
+  const int tx = (tile % job.tiles_x) * kTileSize, ty = (tile / job.tiles_x) * kTileSize;
+  const int lanes = int(hn::Lanes(DD()));
+  TriSetup t;
+  for (int c = 0; c < job.chunk_count; ++c) {
+    for (std::uint32_t entry : job.chunks[std::size_t(c)].bins[std::size_t(tile)]) {
+      if (!setup_triangle(job, c, entry, tx, ty, t)) continue;
+      if (!t.coverage || job.plan.scalar_fragments) {
+        raster_triangle(job, t, ws);
+        continue;
+      }
+      const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
+                            (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
+      if (interior) raster_path<Path::kInterior, BlockKernel::kGeneral, true>(job, t, ws, true);
+      else raster_path<Path::kEdge, BlockKernel::kGeneral, true>(job, t, ws, false);
+      if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
+    }
+  }
+}
+
 }  // namespace
 
 void RasterTile(const DrawJob& job, int tile, WorkerScratch& ws) {
+  if (job.plan.coverage) return raster_tile_coverage(job, tile, ws);
   const int tx = (tile % job.tiles_x) * kTileSize, ty = (tile / job.tiles_x) * kTileSize;
   TriSetup t;
   for (int c = 0; c < job.chunk_count; ++c) {

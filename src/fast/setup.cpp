@@ -67,7 +67,8 @@ bool tile_touches_edge(const RasterVertex& a, const RasterVertex& b, std::int64_
   return dx * (cy - a.sy) - dy * (cx - a.sx) >= threshold;
 }
 
-// Bins one triangle (window vertices in fan order) into the tiles its box covers.
+}  // namespace
+
 void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
                   const RasterVertex& b, const RasterVertex& c, std::uint32_t entry) {
   std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
@@ -105,6 +106,8 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   }
 }
 
+namespace {
+
 // draw.cpp's to_window for a clipped vertex, snapped.
 RasterVertex raster_vertex(const ClipVertex& v, const Viewport& vp) {
   detail::WindowVertex r = detail::to_window(v, vp);
@@ -121,7 +124,7 @@ RasterVertex raster_vertex(const ClipVertex& v, const Viewport& vp) {
 
 // Whether the clipper would cut the triangle to nothing without making a vertex: some plane
 // has every vertex outside it, and no earlier plane has any vertex outside.
-bool trivially_outside(std::uint8_t all, std::uint8_t any) {
+bool trivially_outside(std::uint32_t all, std::uint32_t any) {
   return all != 0 && std::countr_zero(unsigned(all)) <= std::countr_zero(unsigned(any));
 }
 
@@ -134,7 +137,8 @@ void setup_clipped(const DrawJob& job, SetupChunk& chunk, const Triangle& tri) {
     cv.clip = job.projection * job.in->positions[tri[k]];
     expand_varyings(l, &job.varyings[std::size_t(tri[k]) * l.count], cv.attr);
   }
-  if (detail::clip_polygon(chunk.poly, chunk.scratch)) ++stats.triangles_clipped;
+  const std::span<const glm::vec4> user(job.plan.user_planes.data(), std::size_t(job.plan.user_plane_count));
+  if (detail::clip_polygon(chunk.poly, chunk.scratch, user)) ++stats.triangles_clipped;
   std::size_t n = chunk.poly.size();
   if (n == 0) return;
   std::size_t base = chunk.clip_vertices.size();
@@ -163,6 +167,7 @@ void reset_chunk(SetupChunk& chunk, std::size_t tiles) {
   chunk.clip_vertices.clear();
   chunk.clip_varyings.clear();
   chunk.clipped.clear();
+  chunk.coverage.clear();
   chunk.stats = RenderStats{};
 }
 
@@ -173,7 +178,12 @@ void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
     ++stats.triangles_in;
     const Triangle& tri = job.triangles[t];
     if (tri[0] >= n || tri[1] >= n || tri[2] >= n) continue;
-    std::uint8_t oa = job.outcodes[tri[0]], ob = job.outcodes[tri[1]], oc = job.outcodes[tri[2]];
+    std::uint32_t oa = job.outcodes[tri[0]], ob = job.outcodes[tri[1]], oc = job.outcodes[tri[2]];
+    if (!job.user_outcodes.empty()) {  // user clip planes: bits 7 and up, clip.cpp's order
+      oa |= std::uint32_t(job.user_outcodes[tri[0]]) << 7;
+      ob |= std::uint32_t(job.user_outcodes[tri[1]]) << 7;
+      oc |= std::uint32_t(job.user_outcodes[tri[2]]) << 7;
+    }
     if ((oa | ob | oc) != 0) {
       if (trivially_outside(oa & ob & oc, oa | ob | oc)) ++stats.triangles_clipped;
       else setup_clipped(job, chunk, tri);

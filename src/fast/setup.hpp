@@ -15,4 +15,9 @@ void reset_chunk(SetupChunk& chunk, std::size_t tiles);
 /// binning in submission order.
 void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::size_t end);
 
+/// Bins one triangle (window vertices in fan order) as bin entry `entry` into the tiles its
+/// pixel box covers (after the tiles no pixel centre of it can reach are left out).
+void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
+                  const RasterVertex& c, std::uint32_t entry);
+
 }  // namespace shadelab::fast

@@ -16,10 +16,15 @@ detail::WindowVertex window_vertex(const RasterVertex& v, const detail::Attribs*
   return {v.x, v.y, v.z, v.inv_w, attr};
 }
 
+// The triangle's vertices and varyings; for a clipped triangle or a piece, whether the fill
+// offset applies and its coverage.
 void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVertex* v[3],
-             const float* var[3], std::uint32_t& provoking) {
+             const float* var[3], TriSetup& t, bool& offset) {
   const std::size_t stride = std::size_t(job.plan.layout.count);
   std::uint32_t index = entry & kBinIndexMask;
+  t.coverage = nullptr;
+  t.polygon = true;
+  offset = true;
   if (entry & kBinClipped) {
     const SetupChunk& ch = job.chunks[std::size_t(chunk)];
     const ClippedTriangle& ct = ch.clipped[index];
@@ -28,7 +33,10 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
       v[k] = &ch.clip_vertices[ct.v[k]];
       var[k] = &ch.clip_varyings[ct.v[k] * stride];
     }
-    provoking = ct.provoking;
+    t.provoking_index = ct.provoking;
+    if (ct.coverage != ClippedTriangle::kNoCoverage) t.coverage = &ch.coverage[ct.coverage];
+    offset = ct.offset;
+    t.polygon = ct.polygon;
     return;
   }
   const Triangle& tri = job.triangles[index];
@@ -37,7 +45,7 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
     v[k] = &job.vertices[tri[k]];
     var[k] = &job.varyings[tri[k] * stride];
   }
-  provoking = tri[2];
+  t.provoking_index = tri[2];
 }
 
 // The pixels whose centres lie in the triangle's box, cut to the tile and to the draw's
@@ -61,7 +69,8 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
                     TriSetup& t) {
   const RasterVertex* v[3];
   const float* var[3];
-  resolve(job, chunk, entry, v, var, t.provoking_index);
+  bool offset;
+  resolve(job, chunk, entry, v, var, t, offset);
   const RasterVertex &a = *v[0], &b = *v[1], &c = *v[2];
   std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
                       (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
@@ -86,7 +95,7 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   const std::size_t stride = std::size_t(job.plan.layout.count);
   t.flat = job.plan.flat ? &job.varyings[t.provoking_index * stride] : nullptr;
   t.offset = 0.0f;
-  if (job.frag->polygon_offset) {  // from the fan's vertex order, as draw.cpp
+  if (job.frag->polygon_offset && offset) {  // from the fan's vertex order, as draw.cpp
     t.offset = detail::polygon_offset(window_vertex(a, nullptr), window_vertex(b, nullptr),
                                       window_vertex(c, nullptr), *job.frag);
   }
@@ -162,12 +171,18 @@ void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, i
                      double w0, double w1, float z) {
   Framebuffer& fb = *job.fb;
   const FragmentState& frag = *job.frag;
+  float factor = 1.0f;
+  if (t.coverage) {  // draw_prims.cpp's smooth lines and points
+    factor = detail::coverage_at(*t.coverage, x + 0.5, y + 0.5);
+    if (factor < 0.0f) return;
+  }
   std::size_t px = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
   ++ws.stats.fragments;
   // draw.cpp's order: with the alpha test, the colour first (GL 1.1 section 4.1.3).
   glm::vec4 color;
   if (job.plan.alpha_test) {
     color = detail::shade_fragment(*job.shade, reference_fragment(job, t, ws, x, y, w0, w1, z), t.front);
+    color.a *= factor;
     if (!detail::alpha_test(frag.alpha_test, color.a)) return;
   }
   if (!detail::depth_stencil_test(fb, px, z, frag)) return;
@@ -177,6 +192,7 @@ void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, i
   }
   if (!job.plan.alpha_test) {
     color = detail::shade_fragment(*job.shade, reference_fragment(job, t, ws, x, y, w0, w1, z), t.front);
+    color.a *= factor;
   }
   if (frag.capture) return capture(*frag.capture, px, z, color, frag.blend, ws.stats);
   detail::write_color(fb, px, color, frag);

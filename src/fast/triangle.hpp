@@ -23,6 +23,8 @@ struct TriSetup {
   double threshold[3];        ///< coverage: edge value >= threshold (0 owned, 1 not)
   detail::DepthPlane depth;   ///< window depth from the screen-space weights (the reference's)
   float offset;               ///< polygon offset added to depth
+  const detail::Coverage* coverage;  ///< a smooth line's or point's, else null
+  bool polygon;  ///< a polygon's (the polygon stipple applies), not a line's or a point's
   int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
   std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
 };

@@ -219,6 +219,16 @@ void other_varyings(DrawJob& job, std::size_t i) {
   if (l.fog >= 0) v[l.fog] = detail::fog_coordinate(in, i);
 }
 
+// The user clip planes' outcode bits of vertices [first, first + count), from the reference's
+// clip coordinates (draw.cpp's projection * position).
+void user_outcodes(DrawJob& job, std::size_t first, std::size_t count) {
+  const std::span<const glm::vec4> planes(job.plan.user_planes.data(), std::size_t(job.plan.user_plane_count));
+  for (std::size_t i = first; i < first + count; ++i) {
+    const glm::vec4 clip = job.projection * job.in->positions[i];
+    job.user_outcodes[i] = std::uint8_t(detail::clip_outcode(clip, planes) >> 7);
+  }
+}
+
 void colors(DrawJob& job, Batch& b, WorkerScratch& ws) {
   const DrawPlan& p = job.plan;
   const VaryingLayout& l = p.layout;
@@ -246,6 +256,7 @@ void VertexRange(DrawJob& job, std::size_t begin, std::size_t end, WorkerScratch
     colors(job, b, ws);
     for (std::size_t j = 0; j < count; j += dlanes) transform_lanes(job, b, j);
     for (std::size_t j = 0; j < count; ++j) other_varyings(job, first + j);
+    if (job.plan.user_plane_count) user_outcodes(job, first, count);
   }
 }
 

@@ -1,6 +1,7 @@
 // draw_triangles: the vertex stage (transform, per-vertex lighting, fog coordinate),
 // clipping, facing and culling, then the reference rasterizer with per-pixel shading, fog
-// and the fragment operations in GL's order (GL 1.1 chapters 3.5-4.1).
+// and the fragment operations in GL's order (GL 1.1 chapters 3.5-4.1); lines, points and
+// unfilled polygons: draw_prims.cpp.
 #include <chrono>
 #include <cmath>
 
@@ -8,7 +9,9 @@
 
 #include "fast/draw_fast.hpp"
 #include "pipeline/fragment_ops.hpp"
+#include "pipeline/reference_draw.hpp"
 #include "pipeline/stages.hpp"
+#include "raster/prims.hpp"
 #include "shadelab/lighting.hpp"
 
 namespace shadelab {
@@ -180,17 +183,52 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
   return color;
 }
 
+void detail::reference_fragment(const ReferenceDraw& ctx, const Fragment& f, bool front, float offset,
+                                const Coverage* coverage, bool polygon) {
+  Framebuffer& fb = *ctx.fb;
+  const FragmentState& fs = *ctx.fragment;
+  if (!pixel_kept(fs, f.x, f.y, polygon)) return;  // polygon stipple, scissor
+  float factor = 1.0f;
+  if (coverage) {  // smooth lines and points: a discarded fragment touches nothing
+    factor = coverage_at(*coverage, f.x + 0.5, f.y + 0.5);
+    if (factor < 0.0f) return;
+  }
+  std::size_t px = std::size_t(f.y) * fb.width + f.x;
+  ++ctx.stats->fragments;
+  float z = f.z + offset;
+  z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // clamped, NaN to 0 (as the fast path)
+  // The alpha test needs the colour before the depth and stencil tests (GL 1.1 4.1.3);
+  // without it, fragments failing those are not shaded (the same pixels either way). A
+  // smooth line's or point's coverage is part of the colour's alpha (Mesa multiplies it in
+  // at the end of the fragment program).
+  glm::vec4 color;
+  if (fs.alpha_test.enabled) {
+    color = shade_fragment(*ctx.shade, f, front);
+    color.a *= factor;
+    if (!alpha_test(fs.alpha_test, color.a)) return;
+  }
+  if (!depth_stencil_test(fb, px, z, fs)) return;
+  if (!fs.alpha_test.enabled) {
+    color = shade_fragment(*ctx.shade, f, front);
+    color.a *= factor;
+  }
+  if (FragmentCapture* cap = fs.capture) {
+    if (cap->count >= cap->limit) {
+      ++cap->dropped;
+      return;
+    }
+    cap->pixels[px].push_back({z, color, fs.blend});
+    ++cap->count;
+    ++ctx.stats->pixels_shaded;
+    return;
+  }
+  write_color(fb, px, color, fs);
+  ++ctx.stats->pixels_shaded;
+}
+
 namespace {
 
-struct TriangleContext {
-  Framebuffer* fb;
-  const FragmentState* fragment;
-  const ShadeState* shade;
-  const Viewport* viewport;
-  RenderStats* stats;
-};
-
-void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
+void draw_polygon(const ReferenceDraw& ctx, std::vector<ClipVertex>& poly,
                   const ClipVertex* provoking, std::vector<WindowVertex>& win) {
   win.clear();
   for (const ClipVertex& v : poly) win.push_back(to_window(v, *ctx.viewport));
@@ -216,36 +254,8 @@ void draw_polygon(const TriangleContext& ctx, std::vector<ClipVertex>& poly,
   for (std::size_t i = 1; i + 1 < win.size(); ++i) {
     const WindowVertex &a = win[0], &b = win[i], &c = win[i + 1];
     float offset = ctx.fragment->polygon_offset ? polygon_offset(a, b, c, *ctx.fragment) : 0.0f;
-    auto emit = [&](const Fragment& f) {
-      const FragmentState& fs = *ctx.fragment;
-      if (!pixel_kept(fs, f.x, f.y, true)) return;  // polygon stipple, scissor
-      std::size_t px = std::size_t(f.y) * fb.width + f.x;
-      ++ctx.stats->fragments;
-      float z = f.z + offset;
-      z = z > 0.0f ? (z < 1.0f ? z : 1.0f) : 0.0f;  // clamped, NaN to 0 (as the fast path)
-      // The alpha test needs the colour before the depth and stencil tests (GL 1.1 4.1.3);
-      // without it, fragments failing those are not shaded (the same pixels either way).
-      glm::vec4 color;
-      if (fs.alpha_test.enabled) {
-        color = shade_fragment(*ctx.shade, f, front);
-        if (!alpha_test(fs.alpha_test, color.a)) return;
-      }
-      if (!depth_stencil_test(fb, px, z, fs)) return;
-      if (!fs.alpha_test.enabled) color = shade_fragment(*ctx.shade, f, front);
-      if (FragmentCapture* cap = fs.capture) {
-        if (cap->count >= cap->limit) {
-          ++cap->dropped;
-          return;
-        }
-        cap->pixels[px].push_back({z, color, fs.blend});
-        ++cap->count;
-        ++ctx.stats->pixels_shaded;
-        return;
-      }
-      write_color(fb, px, color, fs);
-      ++ctx.stats->pixels_shaded;
-    };
-    rasterize_triangle(a, b, c, fb.width, fb.height, ctx.shade->texture != nullptr, emit);
+    rasterize_triangle(a, b, c, fb.width, fb.height, ctx.shade->texture != nullptr,
+                       [&](const Fragment& f) { reference_fragment(ctx, f, front, offset, nullptr, true); });
   }
 }
 
@@ -265,18 +275,22 @@ void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport
   // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
   ShadeState effective = shade;
   if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
-  TriangleContext ctx{&fb, &fragment, &effective, &viewport, &stats};
+  ReferenceDraw ctx{&fb, &fragment, &effective, &viewport, &stats};
   bool flat = shade.shading == ShadingMode::kFlat;
+  std::array<glm::vec4, ClipPlanes::kCount> planes;
+  const std::span<const glm::vec4> user(planes.data(), std::size_t(clip_space_planes(fragment.clip, projection, planes)));
   std::vector<ClipVertex> poly, scratch;
   std::vector<WindowVertex> win;
-  for (const Triangle& t : in.triangles) {
+  const bool filled = !PrimAssembler::unfilled(fragment);
+  for (const Triangle& t : filled ? in.triangles : std::span<const Triangle>{}) {
     ++stats.triangles_in;
     if (t[0] >= verts.size() || t[1] >= verts.size() || t[2] >= verts.size()) continue;
     poly.assign({verts[t[0]], verts[t[1]], verts[t[2]]});
-    if (clip_polygon(poly, scratch)) ++stats.triangles_clipped;
+    if (clip_polygon(poly, scratch, user)) ++stats.triangles_clipped;
     if (poly.empty()) continue;
     draw_polygon(ctx, poly, flat ? &verts[t[2]] : nullptr, win);
   }
+  draw_prims_reference(ctx, projection, in, verts);
   stats.ms_raster += ms_since(t1);
 }
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -31,9 +33,20 @@ struct ClipVertex {
 };
 
 /// Clips a convex polygon against -w <= x, y, z <= w and w >= epsilon (Sutherland-Hodgman in
-/// homogeneous coordinates). `poly` is replaced by the clipped polygon (possibly empty).
-/// Returns true if any plane cut the polygon.
-bool clip_polygon(std::vector<ClipVertex>& poly, std::vector<ClipVertex>& scratch);
+/// homogeneous coordinates), then against `user` planes given in clip space (inside where
+/// dot(plane, clip) >= 0). `poly` is replaced by the clipped polygon (possibly empty).
+/// Returns true if any plane cut the polygon. Plane i's bit in clip_outcode is bit i: the
+/// seven fixed planes, then the user planes in order.
+bool clip_polygon(std::vector<ClipVertex>& poly, std::vector<ClipVertex>& scratch,
+                  std::span<const glm::vec4> user = {});
+
+/// Bit i set when clip coordinates `c` are outside plane i of clip_polygon.
+std::uint32_t clip_outcode(const glm::vec4& c, std::span<const glm::vec4> user);
+
+/// The user clip planes of `planes` in clip space (eye-space planes times the inverse
+/// projection) into `out`; returns how many are enabled.
+int clip_space_planes(const ClipPlanes& planes, const glm::mat4& projection,
+                      std::array<glm::vec4, ClipPlanes::kCount>& out);
 
 /// A vertex after the viewport transform: window x, y, depth, and 1/w_clip.
 struct WindowVertex {

@@ -79,22 +79,14 @@ inline void simd_only(RandomDraw& d) {
   d.shade.shadow_maps = {};
 }
 
-// Compares one random scene (seed) on every given context; returns "" when all agree. With
-// `extras`, the draws also use fog, scissor, alpha test, logic op and polygon stipple
-// (RandomDraws::fragment_extras).
-inline std::string check_seed(unsigned seed, const std::vector<PipelineContext*>& contexts, bool extras = false) {
-  RandomDraws random(seed);
-  glm::ivec2 size = random.size();
-  Framebuffer initial = random.framebuffer(size);
-  std::vector<RandomDraw> draws;
-  for (int i = random.integer(1, 4); i > 0; --i) {
-    draws.push_back(random.draw(size));
-    if (extras) random.fragment_extras(draws.back(), size);
-  }
+/// Renders `draws` into copies of `initial` with the reference and with each context;
+/// returns "" when every context agrees with the reference (`where` names the scene).
+inline std::string compare_scene(const std::string& where_prefix, const Framebuffer& initial,
+                                 const std::vector<RandomDraw>& draws, const std::vector<PipelineContext*>& contexts) {
   Result ref = render(initial, draws, nullptr);
   for (PipelineContext* ctx : contexts) {
     Result fast = render(initial, draws, ctx);
-    std::string where = "seed " + std::to_string(seed) + " threads " + std::to_string(ctx->threads()) + ": ";
+    std::string where = where_prefix + " threads " + std::to_string(ctx->threads()) + ": ";
     const RenderStats &a = fast.stats, &b = ref.stats;
     if (a.fragments != b.fragments || a.pixels_shaded != b.pixels_shaded ||
         a.triangles_rasterized != b.triangles_rasterized || a.triangles_culled != b.triangles_culled ||
@@ -114,6 +106,21 @@ inline std::string check_seed(unsigned seed, const std::vector<PipelineContext*>
     if (!diff.empty()) return where + "after resolve: " + diff;
   }
   return "";
+}
+
+// Compares one random scene (seed) on every given context; returns "" when all agree. With
+// `extras`, the draws also use fog, scissor, alpha test, logic op and polygon stipple
+// (RandomDraws::fragment_extras).
+inline std::string check_seed(unsigned seed, const std::vector<PipelineContext*>& contexts, bool extras = false) {
+  RandomDraws random(seed);
+  glm::ivec2 size = random.size();
+  Framebuffer initial = random.framebuffer(size);
+  std::vector<RandomDraw> draws;
+  for (int i = random.integer(1, 4); i > 0; --i) {
+    draws.push_back(random.draw(size));
+    if (extras) random.fragment_extras(draws.back(), size);
+  }
+  return compare_scene("seed " + std::to_string(seed), initial, draws, contexts);
 }
 
 }  // namespace shadelab::test

@@ -20,6 +20,9 @@ struct RandomDraw {
   std::vector<glm::vec2> texcoords;
   std::vector<float> fog_coords;
   std::vector<Triangle> triangles;
+  std::vector<std::uint8_t> triangle_flags;
+  std::vector<LineSegment> lines;
+  std::vector<std::uint32_t> points;
   std::vector<Light> lights;
   std::vector<ShadowMap> shadow_maps;
   std::shared_ptr<Texture> texture;
@@ -42,6 +45,9 @@ struct RandomDraw {
     in.fog_coords = fog_coords;
     in.constant_color = constant_color;
     in.triangles = triangles;
+    in.triangle_flags = triangle_flags;
+    in.lines = lines;
+    in.points = points;
     return in;
   }
 };
@@ -120,6 +126,32 @@ class RandomDraws {
     }
   }
 
+  /// A draw of lines, points or polygons in GL_LINE / GL_POINT mode (or a mix), with random
+  /// widths, sizes, stipple, smoothing, polygon modes and offsets, edge flags and clip planes.
+  RandomDraw prim_draw(glm::ivec2 fb_size) {
+    RandomDraw d;
+    const int kind = integer(0, 3);  // lines, points, unfilled polygons, all three
+    const bool pixel_exact = chance(0.3);
+    prim_mesh(d, kind, pixel_exact ? fb_size : glm::ivec2(0));
+    attributes(d);
+    d.projection = pixel_exact ? glm::ortho(0.0f, float(fb_size.x), 0.0f, float(fb_size.y), -1.0f, 1.0f)
+                               : projection(float(fb_size.x) / float(fb_size.y));
+    d.viewport = pixel_exact ? Viewport{0, 0, fb_size.x, fb_size.y} : viewport(fb_size);
+    fragment_state(d);
+    prim_state(d, kind >= 2);
+    shade_state(d);
+    return d;
+  }
+
+  /// User clip planes in eye space, some enabled.
+  void clip_planes(FragmentState& f) {
+    for (glm::vec4& p : f.clip.eye) {
+      glm::vec3 n = unit();
+      p = glm::vec4(n, -glm::dot(n, somewhere()) * uniform(0.0f, 1.0f));
+    }
+    f.clip.enabled = std::uint8_t(integer(0, 255) & integer(0, 255));
+  }
+
   RandomDraw draw(glm::ivec2 fb_size) {
     RandomDraw d;
     mesh(d);
@@ -187,6 +219,71 @@ class RandomDraws {
       for (glm::vec4& p : d.positions) p *= uniform(0.5f, 2.0f);
     }
     if (chance(0.05)) d.triangles.push_back({0, 0, std::uint32_t(d.positions.size() + 5)});
+  }
+
+  glm::vec4 pixel_point(glm::ivec2 s) {
+    float x = uniform(-3, float(s.x) + 3), y = uniform(-3, float(s.y) + 3);
+    if (chance(0.4)) x = std::floor(x), y = std::floor(y);
+    else if (chance(0.4)) x = std::floor(x) + 0.5f, y = std::floor(y) + 0.5f;
+    return {x, y, uniform(-0.9f, 0.9f), 1.0f};
+  }
+
+  // Vertices and the primitives over them; with `pixels`, window positions of a pixel-exact
+  // orthographic view (ends on pixel centres and corners).
+  void prim_mesh(RandomDraw& d, int kind, glm::ivec2 pixels) {
+    if (kind >= 2) {
+      mesh(d);
+      if (pixels.x) {
+        for (glm::vec4& p : d.positions) p = pixel_point(pixels);
+      }
+      for (std::size_t i = 0; i < d.triangles.size(); ++i) {
+        d.triangle_flags.push_back(std::uint8_t(chance(0.7) ? kTriangleEdges : integer(0, 7)) |
+                                   (chance(0.5) ? kTriangleRestartStipple : 0));
+      }
+    }
+    const int n = integer(2, 60);
+    const auto base = std::uint32_t(d.positions.size());
+    for (int i = 0; i < n; ++i) {
+      glm::vec4 p = pixels.x ? pixel_point(pixels) : glm::vec4(somewhere(), 1.0f);
+      if (!pixels.x && chance(0.1)) p *= uniform(0.5f, 2.0f);  // w != 1
+      d.positions.push_back(p);
+    }
+    if (kind == 0 || kind == 3) {
+      for (int i = 0; i + 1 < n; ++i) {
+        const bool strip = chance(0.5);
+        d.lines.push_back({{base + std::uint32_t(i), base + std::uint32_t(strip ? i + 1 : integer(0, n - 1))},
+                           chance(0.3) ? LineSegment::kRestartStipple : 0u});
+      }
+      if (chance(0.05)) d.lines.push_back({{0, std::uint32_t(d.positions.size() + 3)}});
+    }
+    if (kind == 1 || kind == 3) {
+      for (int i = 0; i < n; ++i) d.points.push_back(base + std::uint32_t(integer(0, n - 1)));
+    }
+  }
+
+  float prim_size() {
+    if (chance(0.3)) return 1.0f;
+    if (chance(0.1)) return uniform(0.1f, 0.99f);
+    if (chance(0.05)) return uniform(20, 300);
+    return chance(0.5) ? float(integer(1, 8)) : uniform(1, 9);
+  }
+
+  void prim_state(RandomDraw& d, bool unfilled) {
+    FragmentState& f = d.frag;
+    f.line = {prim_size(), chance(0.2), chance(0.3), std::uint16_t(integer(0, 0xffff)), std::uint16_t(integer(1, 4))};
+    f.point = {prim_size(), chance(0.2)};
+    if (unfilled) {
+      f.front_mode = PolygonMode(integer(0, 2));
+      f.back_mode = PolygonMode(integer(0, 2));
+      if (f.front_mode == PolygonMode::kFill && f.back_mode == PolygonMode::kFill) f.back_mode = PolygonMode::kLine;
+    }
+    if (chance(0.2)) {
+      f.offset_line = chance(0.5);
+      f.offset_point = chance(0.5);
+      f.offset_factor = uniform(-2, 2);
+      f.offset_units = uniform(-8, 8);
+    }
+    if (chance(0.25)) clip_planes(f);
   }
 
   void attributes(RandomDraw& d) {

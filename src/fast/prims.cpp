@@ -1,0 +1,114 @@
+// Lines, points and unfilled polygons on the fast pipeline: each vertex's clip coordinates
+// (the reference's projection) and its varyings expanded into the reference's attributes, the
+// reference's primitive assembly, and each piece it makes stored in the setup chunk as clipped
+// triangles are (window vertices, compact varyings) and binned.
+#include "fast/prims.hpp"
+
+#include "fast/setup.hpp"
+
+namespace shadelab::fast {
+
+namespace {
+
+using detail::Piece;
+using detail::PrimAssembler;
+using detail::PrimVertex;
+
+class ChunkSink final : public detail::PieceSink {
+ public:
+  ChunkSink(const DrawJob& job, SetupChunk& chunk) : job_(job), chunk_(chunk) {}
+
+  void piece(const Piece& p) override {
+    const VaryingLayout& l = job_.plan.layout;
+    const std::size_t base = chunk_.clip_vertices.size();
+    const int corners = p.triangles == 1 ? 3 : 4;
+    for (int k = 0; k < corners; ++k) {
+      const detail::PieceCorner& c = p.corner[k];
+      RasterVertex r;
+      r.x = c.x;
+      r.y = c.y;
+      const detail::FixedPoint s = detail::snap(c.x, c.y);
+      r.sx = std::int32_t(s.x);
+      r.sy = std::int32_t(s.y);
+      r.z = c.z;
+      r.inv_w = c.inv_w;
+      chunk_.clip_vertices.push_back(r);
+      chunk_.clip_varyings.resize(chunk_.clip_varyings.size() + std::size_t(l.count));
+      compact_varyings(l, c.attr, &chunk_.clip_varyings[chunk_.clip_varyings.size() - std::size_t(l.count)]);
+    }
+    std::uint32_t coverage = ClippedTriangle::kNoCoverage;
+    if (p.coverage.kind != detail::Coverage::Kind::kNone) {
+      coverage = std::uint32_t(chunk_.coverage.size());
+      chunk_.coverage.push_back(p.coverage);
+    }
+    for (int t = 0; t < p.triangles; ++t) {
+      ClippedTriangle ct;
+      for (int k = 0; k < 3; ++k) ct.v[k] = std::uint32_t(base + p.tri[t][k]);
+      ct.provoking = p.provoking;
+      ct.coverage = coverage;
+      ct.offset = p.offset;
+      ct.polygon = p.polygon;
+      const std::uint32_t index = std::uint32_t(chunk_.clipped.size());
+      chunk_.clipped.push_back(ct);
+      const std::uint32_t entry = index | kBinClipped | (p.front ? kBinFront : 0);
+      bin_triangle(job_, chunk_, chunk_.clip_vertices[ct.v[0]], chunk_.clip_vertices[ct.v[1]],
+                   chunk_.clip_vertices[ct.v[2]], entry);
+    }
+  }
+
+ private:
+  const DrawJob& job_;
+  SetupChunk& chunk_;
+};
+
+// Vertex i as the reference's vertex stage makes it: clip coordinates, window position and
+// the attributes the draw carries.
+PrimVertex prim_vertex(const DrawJob& job, const PrimAssembler& assembler, std::uint32_t i) {
+  PrimVertex v = assembler.make_vertex(job.projection * job.in->positions[i]);
+  const VaryingLayout& l = job.plan.layout;
+  expand_varyings(l, &job.varyings[std::size_t(i) * std::size_t(l.count)], v.attr);
+  return v;
+}
+
+}  // namespace
+
+std::size_t setup_items(const VertexInput& in) { return in.triangles.size() + in.lines.size() + in.points.size(); }
+
+bool sequential_setup(const DrawJob& job) {
+  const FragmentState& f = *job.frag;
+  const bool line_edges = f.front_mode == PolygonMode::kLine || f.back_mode == PolygonMode::kLine;
+  return f.line.stipple && (!job.in->lines.empty() || (line_edges && !job.triangles.empty()));
+}
+
+void setup_prims(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::size_t end, std::uint32_t& stipple) {
+  const VertexInput& in = *job.in;
+  const std::size_t n = job.vertices.size(), triangles = job.triangles.size(), lines = in.lines.size();
+  const bool unfilled = PrimAssembler::unfilled(*job.frag);
+  if (!unfilled) begin = std::max(begin, triangles);
+  if (begin >= end) return;
+  PrimAssembler assembler(*job.frag, job.viewport, job.projection, job.fb_height, job.plan.flat, stipple);
+  ChunkSink sink(job, chunk);
+  for (std::size_t item = begin; item < end; ++item) {
+    if (item < triangles) {
+      ++chunk.stats.triangles_in;
+      const Triangle& t = job.triangles[item];
+      if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
+      const PrimVertex v[3] = {prim_vertex(job, assembler, t[0]), prim_vertex(job, assembler, t[1]),
+                               prim_vertex(job, assembler, t[2])};
+      const std::uint8_t flags = item < in.triangle_flags.size()
+                                     ? in.triangle_flags[item]
+                                     : std::uint8_t(kTriangleEdges | kTriangleRestartStipple);
+      assembler.triangle(v, flags, t[2], sink);
+    } else if (item < triangles + lines) {
+      const LineSegment& s = in.lines[item - triangles];
+      if (s.v[0] >= n || s.v[1] >= n) continue;
+      assembler.line(prim_vertex(job, assembler, s.v[0]), prim_vertex(job, assembler, s.v[1]), s.flags, s.v[1], sink);
+    } else {
+      const std::uint32_t i = in.points[item - triangles - lines];
+      if (i < n) assembler.point(prim_vertex(job, assembler, i), i, sink);
+    }
+  }
+  stipple = assembler.stipple_counter();
+}
+
+}  // namespace shadelab::fast

@@ -1,0 +1,348 @@
+// Lines, points and unfilled polygons assembled in Mesa's draw module's order (its clip, cull,
+// twoside, offset, flatshade, unfilled, stipple and smooth-line/point stages), each line or
+// point ending as pieces for the triangle rasterizer (prim_setup.cpp decides their pixels).
+#include "raster/prims.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadelab::detail {
+
+namespace {
+
+// Mesa's limits: GL_LINE_WIDTH_RANGE and GL_POINT_SIZE_RANGE are [1, 255].
+constexpr float kMaxWidth = 255.0f;
+
+float clamp_size(float v) { return std::clamp(std::isnan(v) ? 1.0f : v, 1.0f, kMaxWidth); }
+
+// A vertex a fraction t along a-b in window space: every value interpolated linearly, as
+// Mesa's line stipple splits a line.
+PrimVertex screen_lerp(const PrimVertex& a, const PrimVertex& b, float t) {
+  PrimVertex v;
+  v.clip = a.clip;
+  v.win = {a.win.x + t * (b.win.x - a.win.x), a.win.y + t * (b.win.y - a.win.y)};
+  v.z = a.z + t * (b.z - a.z);
+  v.inv_w = a.inv_w + t * (b.inv_w - a.inv_w);
+  for (int i = 0; i < kAttrCount; ++i) v.attr[i] = a.attr[i] + t * (b.attr[i] - a.attr[i]);
+  v.edge = true;
+  return v;
+}
+
+// The corner of a line's quadrilateral at parameter t: depth and 1/w linear along the line,
+// the other attributes perspective-correct (a/w and 1/w linear, then divided), as llvmpipe
+// sets up a line's planes.
+void line_corner(PieceCorner& c, const PrimVertex& a, const PrimVertex& b, float t) {
+  c.z = a.z + t * (b.z - a.z);
+  c.inv_w = a.inv_w + t * (b.inv_w - a.inv_w);
+  for (int i = 0; i < kAttrCount; ++i) {
+    const float pa = a.attr[i] * a.inv_w, pb = b.attr[i] * b.inv_w;
+    c.attr[i] = (pa + t * (pb - pa)) / c.inv_w;
+  }
+}
+
+void copy_vertex(PieceCorner& c, const PrimVertex& v, double x, double y) {
+  c.x = x;
+  c.y = y;
+  c.z = v.z;
+  c.inv_w = v.inv_w;
+  c.attr = v.attr;
+}
+
+// The affine function of GL window position through values f0, f1, f2 at corners p0, p1, p2.
+void affine(const PieceCorner& p0, const PieceCorner& p1, const PieceCorner& p2, float f0, float f1, float f2,
+            float& c0, float& cx, float& cy) {
+  const double ex = p1.x - p0.x, ey = p1.y - p0.y, fx = p2.x - p0.x, fy = p2.y - p0.y;
+  const double det = ex * fy - ey * fx;
+  if (det == 0.0) {
+    c0 = f0, cx = cy = 0.0f;
+    return;
+  }
+  const double gx = ((f1 - f0) * fy - (f2 - f0) * ey) / det, gy = ((f2 - f0) * ex - (f1 - f0) * fx) / det;
+  cx = float(gx), cy = float(gy);
+  c0 = float(f0 - gx * p0.x - gy * p0.y);
+}
+
+double gl_y(float down, int fb_height) { return double(fb_height) - double(down); }
+
+// Mesa's SATURATE: NaN passes through.
+float saturate(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
+
+}  // namespace
+
+float coverage_at(const Coverage& c, double x, double y) {
+  const float u = float(c.u0 + c.ux * x + c.uy * y), v = float(c.v0 + c.vx * x + c.vy * y);
+  if (c.kind == Coverage::Kind::kLine) {
+    auto sat = [](float s) { return std::clamp(s, 0.0f, 1.0f); };
+    return sat(c.a - std::fabs(u)) * sat(c.b - std::fabs(v));
+  }
+  if (c.kind == Coverage::Kind::kPoint) {
+    const float d = u * u + v * v;
+    if (1.0f < d) return -1.0f;
+    return c.a >= d ? (1.0f / (1.0f - c.a)) * (1.0f - d) : 1.0f;
+  }
+  return 1.0f;
+}
+
+PrimAssembler::PrimAssembler(const FragmentState& fragment, const Viewport& viewport, const glm::mat4& projection,
+                             int fb_height, bool flat, std::uint32_t stipple_counter)
+    : frag_(fragment), viewport_(viewport), fb_height_(fb_height), flat_(flat),
+      planes_(fragment.clip, projection), stipple_counter_(stipple_counter) {}
+
+PrimVertex PrimAssembler::make_vertex(const glm::vec4& clip) const {
+  PrimVertex v;
+  v.clip = clip;
+  v.edge = true;
+  to_down_window(v, viewport_, fb_height_);
+  return v;
+}
+
+void PrimAssembler::flat_colors(Piece& p) const {
+  if (!flat_) return;
+  for (PieceCorner& c : p.corner) {
+    std::copy(flat_attr_.begin() + kFrontColor, flat_attr_.begin() + kEyePosition, c.attr.begin() + kFrontColor);
+  }
+}
+
+void PrimAssembler::line(PrimVertex a, PrimVertex b, std::uint32_t flags, std::uint32_t provoking,
+                         PieceSink& sink) {
+  if (flat_) flat_attr_ = b.attr;
+  const std::uint32_t oa = outcode(a), ob = outcode(b);
+  if ((oa | ob) && !clip_segment(planes_, oa, ob, a, b, viewport_, fb_height_)) return;
+  // The stipple restarts with the segment (Mesa: in its stipple stage, after clipping).
+  if (flags & LineSegment::kRestartStipple) stipple_counter_ = 0;
+  segment(a, b, true, provoking, sink);
+}
+
+void PrimAssembler::point(const PrimVertex& p, std::uint32_t provoking, PieceSink& sink) {
+  if (outcode(p) != 0) return;  // a point outside the view volume or a clip plane is gone
+  if (flat_) flat_attr_ = p.attr;
+  point_piece(p, true, provoking, sink);
+}
+
+void PrimAssembler::segment(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                            PieceSink& sink) {
+  if (frag_.line.stipple) return stippled(a, b, front, provoking, sink);
+  if (frag_.line.smooth) return smooth_line(a, b, front, provoking, sink);
+  aliased_line(a, b, front, provoking, sink);
+}
+
+// GL 1.1 section 3.4.2: pixel i along the line is drawn when bit (counter / factor) mod 16 of
+// the pattern is set; Mesa cuts the line into its drawn runs (of the major axis' length, or
+// the Euclidean one for smooth lines), each drawn as a line of its own.
+void PrimAssembler::stippled(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                             PieceSink& sink) {
+  const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
+  const float length = frag_.line.smooth ? std::sqrt(dx * dx + dy * dy) : std::max(std::fabs(dx), std::fabs(dy));
+  const int pixels = std::isfinite(length) ? int(std::ceil(length)) : 0;
+  const unsigned factor = std::max<unsigned>(1u, frag_.line.factor);
+  auto on = [&](int i) { return (frag_.line.pattern >> (((stipple_counter_ + unsigned(i)) / factor) & 15u)) & 1u; };
+  auto run = [&](float t0, float t1) {
+    const PrimVertex v0 = t0 > 0.0f ? screen_lerp(a, b, t0) : a, v1 = t1 < 1.0f ? screen_lerp(a, b, t1) : b;
+    if (frag_.line.smooth) smooth_line(v0, v1, front, provoking, sink);
+    else aliased_line(v0, v1, front, provoking, sink);
+  };
+  bool state = false;
+  float start = 0.0f;
+  for (int i = 0; i < pixels; ++i) {
+    const bool drawn = on(i) != 0;
+    if (drawn == state) continue;
+    if (state) run(start / length, float(i) / length);
+    else start = float(i);
+    state = drawn;
+  }
+  if (state && start < length) run(start / length, 1.0f);
+  stipple_counter_ += unsigned(pixels);
+}
+
+void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                                 PieceSink& sink) {
+  RasterQuad q;
+  if (!line_quad(a.win, b.win, clamp_size(frag_.line.width), fb_height_, q)) return;
+  Piece& p = piece_;
+  for (int k = 0; k < 4; ++k) {
+    p.corner[k].x = double(q.corner[k].x) / double(kSubpixelOne);
+    p.corner[k].y = double(q.corner[k].y) / double(kSubpixelOne);
+    line_corner(p.corner[k], a, b, q.t[k]);
+  }
+  p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
+  p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
+  p.triangles = 2;
+  p.front = front;
+  p.offset = false;
+  p.polygon = false;
+  p.provoking = provoking;
+  p.coverage = Coverage{};
+  flat_colors(p);
+  sink.piece(p);
+}
+
+// Mesa's smooth line: a rectangle half a pixel longer than the line at each end and wider
+// than it (half width 1 up to width 1, else width / 2 + 1/2), its coverage from the distance
+// to the line across and along (window coordinates y down, as Mesa computes them).
+void PrimAssembler::smooth_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                                PieceSink& sink) {
+  const float width = clamp_size(frag_.line.width);
+  const float half_width = width <= 1.0f ? 1.0f : 0.5f * width + 0.5f;
+  const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
+  const float angle = std::atan2(dy, dx), c = std::cos(angle), s = std::sin(angle);
+  float half_length = 0.5f * std::sqrt(dx * dx + dy * dy);
+  half_length = half_length < 0.5f ? 2.0f * half_length : half_length + 0.5f;
+  const float tl = 0.5f, tw = half_width;
+  const float ox[4] = {-tl * c - tw * s, -tl * c - -tw * s, tl * c - tw * s, tl * c - -tw * s};
+  const float oy[4] = {-tl * s + tw * c, -tl * s + -tw * c, tl * s + tw * c, tl * s + -tw * c};
+  Piece& p = piece_;
+  for (int k = 0; k < 4; ++k) {
+    const PrimVertex& v = k < 2 ? a : b;
+    copy_vertex(p.corner[k], v, double(v.win.x + ox[k]), gl_y(v.win.y + oy[k], fb_height_));
+  }
+  p.tri[0][0] = 2, p.tri[0][1] = 1, p.tri[0][2] = 0;
+  p.tri[1][0] = 3, p.tri[1][1] = 1, p.tri[1][2] = 2;
+  p.triangles = 2;
+  p.front = front;
+  p.offset = false;
+  p.polygon = false;
+  p.provoking = provoking;
+  Coverage& cov = p.coverage;
+  cov.kind = Coverage::Kind::kLine;
+  cov.a = half_width;
+  cov.b = half_length;
+  affine(p.corner[0], p.corner[1], p.corner[2], -half_width, half_width, -half_width, cov.u0, cov.ux, cov.uy);
+  affine(p.corner[0], p.corner[1], p.corner[2], -half_length, -half_length, half_length, cov.v0, cov.vx, cov.vy);
+  flat_colors(p);
+  sink.piece(p);
+}
+
+void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t provoking, PieceSink& sink) {
+  if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a point
+  const float size = clamp_size(frag_.point.size);
+  Piece& p = piece_;
+  p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
+  p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
+  p.triangles = 2;
+  p.front = front;
+  p.offset = false;
+  p.polygon = false;
+  p.provoking = provoking;
+  p.coverage = Coverage{};
+  if (frag_.point.smooth) {
+    // Mesa's smooth point: a square of radius 1 up to size 2, else size / 2, discarding
+    // fragments beyond the radius.
+    const float r = size <= 2.0f ? 1.0f : 0.5f * size;
+    const float sx[4] = {-r, r, r, -r}, sy[4] = {-r, -r, r, r};
+    for (int k = 0; k < 4; ++k) copy_vertex(p.corner[k], v, double(v.win.x + sx[k]), gl_y(v.win.y + sy[k], fb_height_));
+    float k = 1.0f / r;
+    k = 1.0f - 2.0f * k + k * k;
+    p.coverage.kind = Coverage::Kind::kPoint;
+    p.coverage.a = k;
+    affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, 1.0f, 1.0f, p.coverage.u0, p.coverage.ux, p.coverage.uy);
+    affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, -1.0f, 1.0f, p.coverage.v0, p.coverage.vx, p.coverage.vy);
+  } else {
+    RasterQuad q;
+    if (!point_quad(v.win, size, fb_height_, q)) return;
+    for (int k = 0; k < 4; ++k) {
+      copy_vertex(p.corner[k], v, double(q.corner[k].x) / double(kSubpixelOne),
+                  double(q.corner[k].y) / double(kSubpixelOne));
+    }
+  }
+  flat_colors(p);
+  sink.piece(p);
+}
+
+// GL 1.1 section 3.5.4 in Mesa's order: the triangle clipped (its edge flags following the
+// edges, edges along a user clip plane drawn), each triangle of the clipped polygon's fan then
+// facing, culled, coloured by its facing, offset, and drawn in its face's mode.
+void PrimAssembler::triangle(const PrimVertex (&v)[3], std::uint8_t flags, std::uint32_t provoking,
+                             PieceSink& sink) {
+  if (flat_) flat_attr_ = v[2].attr;
+  const std::uint32_t o0 = outcode(v[0]), o1 = outcode(v[1]), o2 = outcode(v[2]);
+  if (!(o0 | o1 | o2)) {
+    const PrimVertex* tri[3] = {&v[0], &v[1], &v[2]};
+    return fan_triangle(tri, flags, provoking, sink);
+  }
+  if (o0 & o1 & o2) return;  // wholly outside one plane
+  poly_.assign({v[0], v[1], v[2]});
+  poly_[0].edge = flags & kTriangleEdge01;
+  poly_[1].edge = flags & kTriangleEdge12;
+  poly_[2].edge = flags & kTriangleEdge20;
+  clip_edged_polygon(planes_, o0 | o1 | o2, poly_, scratch_, viewport_, fb_height_);
+  polygon(poly_, provoking, sink);
+}
+
+// The clipped polygon's fan (p[i - 1], p[i], p[0]), its outer edges flagged, the stipple
+// restarting with its first triangle (Mesa's clipper emits it so).
+void PrimAssembler::polygon(std::vector<PrimVertex>& p, std::uint32_t provoking, PieceSink& sink) {
+  const std::size_t n = p.size();
+  for (std::size_t i = 2; i < n; ++i) {
+    std::uint8_t f = p[i - 1].edge ? kTriangleEdge01 : 0;
+    if (i == 2) f |= kTriangleRestartStipple | (p[0].edge ? kTriangleEdge20 : 0);
+    if (i == n - 1 && p[n - 1].edge) f |= kTriangleEdge12;
+    const PrimVertex* tri[3] = {&p[i - 1], &p[i], &p[0]};
+    fan_triangle(tri, f, provoking, sink);
+  }
+}
+
+// glPolygonOffset for a polygon drawn as lines or points, as Mesa's draw module computes it
+// per triangle in float: the depth slopes from the window coordinates (dz/dx and dz/dy of the
+// plane, through 1/det: infinite or NaN for a zero-area triangle), the units in steps of two
+// 24-bit depth resolutions.
+float PrimAssembler::unfilled_offset(const PrimVertex (&w)[3], float det) const {
+  const float inv_det = 1.0f / det;
+  const float ex = w[0].win.x - w[2].win.x, ey = w[0].win.y - w[2].win.y, ez = w[0].z - w[2].z;
+  const float fx = w[1].win.x - w[2].win.x, fy = w[1].win.y - w[2].win.y, fz = w[1].z - w[2].z;
+  const float a = ey * fz - ez * fy, b = ez * fx - ex * fz;
+  const float dzdx = std::fabs(a * inv_det), dzdy = std::fabs(b * inv_det);
+  const float slope = dzdx > dzdy ? dzdx : dzdy;
+  const float units = float(double(frag_.offset_units) * (1.0 / double((1 << 24) - 1)) * 2.0);
+  return units + slope * frag_.offset_factor;
+}
+
+void PrimAssembler::fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std::uint32_t provoking,
+                                 PieceSink& sink) {
+  // Mesa's determinant, in window coordinates with y down: negative is counter-clockwise on
+  // the screen. A zero-area triangle is back facing for culling, takes its mode by the
+  // clockwise rule and keeps its front colours.
+  const float ex = v[0]->win.x - v[2]->win.x, ey = v[0]->win.y - v[2]->win.y;
+  const float fx = v[1]->win.x - v[2]->win.x, fy = v[1]->win.y - v[2]->win.y;
+  const float det = ex * fy - ey * fx;
+  const bool ccw = det < 0.0f, front_ccw = frag_.front_ccw;
+  const bool front_face = det != 0.0f && ccw == front_ccw;
+  if ((frag_.cull == CullMode::kBack && !front_face) || (frag_.cull == CullMode::kFront && front_face)) return;
+  const bool front_colors = !(det * (front_ccw ? -1.0f : 1.0f) < 0.0f);
+  const bool cw = det >= 0.0f;
+  const PolygonMode mode = cw == front_ccw ? frag_.back_mode : frag_.front_mode;
+  const bool offset = mode == PolygonMode::kFill ? frag_.polygon_offset
+                      : mode == PolygonMode::kLine ? frag_.offset_line : frag_.offset_point;
+  PrimVertex w[3] = {*v[0], *v[1], *v[2]};
+  if (offset && mode != PolygonMode::kFill) {
+    // A zero-area triangle's offset is NaN, and so its depth: fragments take depth 0 (the
+    // fragment path clamps NaN to 0, as llvmpipe does).
+    const float dz = unfilled_offset(w, det);
+    for (PrimVertex& u : w) u.z = saturate(u.z + dz);
+  }
+  if (mode == PolygonMode::kFill) {
+    if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a triangle
+    Piece& p = piece_;
+    for (int k = 0; k < 3; ++k) copy_vertex(p.corner[k], w[k], w[k].win.x, gl_y(w[k].win.y, fb_height_));
+    p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
+    p.triangles = 1;
+    p.front = front_colors;
+    p.offset = frag_.polygon_offset;
+    p.polygon = true;
+    p.provoking = provoking;
+    p.coverage = Coverage{};
+    flat_colors(p);
+    return sink.piece(p);
+  }
+  if (mode == PolygonMode::kLine) {
+    if (flags & kTriangleRestartStipple) stipple_counter_ = 0;
+    if (flags & kTriangleEdge20) segment(w[2], w[0], front_colors, provoking, sink);
+    if (flags & kTriangleEdge01) segment(w[0], w[1], front_colors, provoking, sink);
+    if (flags & kTriangleEdge12) segment(w[1], w[2], front_colors, provoking, sink);
+    return;
+  }
+  if (flags & kTriangleEdge01) point_piece(w[0], front_colors, provoking, sink);
+  if (flags & kTriangleEdge12) point_piece(w[1], front_colors, provoking, sink);
+  if (flags & kTriangleEdge20) point_piece(w[2], front_colors, provoking, sink);
+}
+
+}  // namespace shadelab::detail

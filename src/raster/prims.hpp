@@ -1,0 +1,110 @@
+// Primitive assembly for lines, points and polygons drawn in line or point mode, shared by the
+// reference and the fast pipeline: clipping, facing, culling, the polygon modes and edge flags,
+// polygon offset, line stipple, then each line or point turned into pieces for the triangle
+// rasterizer (a quadrilateral, or the triangles of a smooth line or point) with their
+// corners' attributes. The order of these stages is Mesa's draw module's (clip, cull,
+// two-sided colours, offset, flat shading, unfilled, stipple). Draws no pixels: a sink takes
+// the pieces.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "raster/prim_clip.hpp"
+
+namespace shadelab::detail {
+
+/// Coverage of a smooth line or point (GL 1.1 sections 3.3.2, 3.4.2) as Mesa's draw module
+/// computes it, from two functions affine in window position (GL coordinates: u = u0 + ux x
+/// + uy y at the pixel centre (x, y)). Lines: alpha times sat(a - |u|) sat(b - |v|). Points:
+/// d = u^2 + v^2; fragments with d > 1 are discarded; alpha times (1 - d) / (1 - a) where
+/// d <= a (Mesa 22's lowering; see docs/rasterization.md), else alpha unchanged.
+struct Coverage {
+  enum class Kind : std::uint8_t { kNone, kLine, kPoint };
+  Kind kind = Kind::kNone;
+  float u0 = 0, ux = 0, uy = 0, v0 = 0, vx = 0, vy = 0;
+  float a = 0, b = 0;
+};
+
+/// The alpha factor at GL window position (x, y) (a pixel centre); negative: discarded.
+float coverage_at(const Coverage& c, double x, double y);
+
+/// A corner of a piece: GL window position (y up), depth, 1/w and attributes.
+struct PieceCorner {
+  double x, y;
+  float z, inv_w;
+  Attribs attr;
+};
+
+/// What the rasterizer draws: one or two triangles over `corner` (tri[k] holds corner
+/// indices; their winding does not matter), facing `front` (two-sided colours), from the
+/// draw's main vertex `provoking` (flat shading's colours). `offset`: a filled polygon, which
+/// takes glPolygonOffset's fill offset; lines and points have their offset in their depth.
+/// `polygon`: a filled polygon's triangle (polygon stipple applies to it alone).
+struct Piece {
+  PieceCorner corner[4];
+  std::uint8_t tri[2][3];
+  int triangles = 0;
+  bool front = true;
+  bool offset = false;
+  bool polygon = false;  ///< a filled polygon's triangle: the polygon stipple applies
+  std::uint32_t provoking = 0;
+  Coverage coverage;
+};
+
+class PieceSink {
+ public:
+  virtual void piece(const Piece& p) = 0;
+
+ protected:
+  ~PieceSink() = default;
+};
+
+/// Assembles one draw's lines, points and unfilled polygons. Vertices come in as clip
+/// coordinates with their attributes (make_vertex); attributes are the reference's slots.
+class PrimAssembler {
+ public:
+  PrimAssembler(const FragmentState& fragment, const Viewport& viewport, const glm::mat4& projection,
+                int fb_height, bool flat, std::uint32_t stipple_counter);
+
+  /// A vertex at `clip`: window position and outcode computed; attributes left to the caller.
+  PrimVertex make_vertex(const glm::vec4& clip) const;
+  std::uint32_t outcode(const PrimVertex& v) const { return planes_.outcode(v.clip); }
+
+  /// A segment of GL_LINES or a strip (LineSegment flags); `provoking` is the draw's index of
+  /// b, whose colours are the flat ones.
+  void line(PrimVertex a, PrimVertex b, std::uint32_t flags, std::uint32_t provoking, PieceSink& sink);
+  void point(const PrimVertex& p, std::uint32_t provoking, PieceSink& sink);
+  /// A triangle of a draw with some face in GL_LINE or GL_POINT mode (every triangle of such a
+  /// draw comes here, filled ones too): `flags` are its TriangleFlag bits.
+  void triangle(const PrimVertex (&v)[3], std::uint8_t flags, std::uint32_t provoking, PieceSink& sink);
+
+  /// Whether a draw with this state sends its triangles to triangle().
+  static bool unfilled(const FragmentState& f) {
+    return f.front_mode != PolygonMode::kFill || f.back_mode != PolygonMode::kFill;
+  }
+  std::uint32_t stipple_counter() const { return stipple_counter_; }
+
+ private:
+  void polygon(std::vector<PrimVertex>& poly, std::uint32_t provoking, PieceSink& sink);
+  void fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std::uint32_t provoking, PieceSink& sink);
+  void segment(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void stippled(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void aliased_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void smooth_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void point_piece(const PrimVertex& p, bool front, std::uint32_t provoking, PieceSink& sink);
+  void flat_colors(Piece& p) const;
+  float unfilled_offset(const PrimVertex (&w)[3], float det) const;
+
+  const FragmentState& frag_;
+  Viewport viewport_;
+  int fb_height_;
+  bool flat_;
+  ClipSpace planes_;
+  std::uint32_t stipple_counter_;
+  Attribs flat_attr_{};  // flat shading: the current primitive's provoking colours
+  Piece piece_;
+  std::vector<PrimVertex> poly_, scratch_;
+};
+
+}  // namespace shadelab::detail
