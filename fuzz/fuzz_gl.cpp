@@ -60,6 +60,18 @@ class Input {
         GL_DITHER, GL_FOG_MODE, GL_FOG_DENSITY, GL_FOG_START, GL_FOG_END, GL_FOG_COLOR, GL_FOG_INDEX,
         GL_FOG_HINT, GL_EXP, GL_EXP2, GL_XOR, GL_SET, GL_CLEAR, GL_SCISSOR_BOX, GL_ALPHA_TEST_REF,
         GL_LOGIC_OP_MODE, GL_UNPACK_LSB_FIRST, GL_PACK_LSB_FIRST, GL_UNPACK_SKIP_PIXELS,
+        // Pixel operations: formats, types, copy types, pixel store, transfer and map names,
+        // buffers, accumulation operations.
+        GL_COLOR_INDEX, GL_STENCIL_INDEX, GL_DEPTH_COMPONENT, GL_RED, GL_GREEN, GL_BLUE,
+        GL_LUMINANCE_ALPHA, GL_BGR, GL_BGRA, GL_BITMAP, GL_COLOR, GL_DEPTH, GL_STENCIL,
+        GL_UNPACK_SWAP_BYTES, GL_PACK_SWAP_BYTES, GL_PACK_SKIP_ROWS, GL_MAP_COLOR, GL_MAP_STENCIL,
+        GL_INDEX_SHIFT, GL_INDEX_OFFSET, GL_RED_SCALE, GL_GREEN_BIAS, GL_ALPHA_SCALE, GL_DEPTH_SCALE, GL_DEPTH_BIAS,
+        GL_ZOOM_X, GL_PIXEL_MAP_I_TO_I, GL_PIXEL_MAP_S_TO_S, GL_PIXEL_MAP_I_TO_R,
+        GL_PIXEL_MAP_I_TO_A, GL_PIXEL_MAP_R_TO_R, GL_PIXEL_MAP_A_TO_A, GL_PIXEL_MAP_R_TO_R_SIZE,
+        GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_DISTANCE,
+        GL_CURRENT_RASTER_POSITION_VALID, GL_ACCUM_RED_BITS, GL_ACCUM_CLEAR_VALUE, GL_DRAW_BUFFER,
+        GL_NONE, GL_LEFT, GL_RIGHT, GL_AUX0, GL_FRONT_LEFT, GL_BACK_RIGHT, GL_ACCUM, GL_LOAD,
+        GL_RETURN, GL_MULT, GL_ADD,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -126,7 +138,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 0; i < sizeof b->list_names; ++i) b->list_names[i] = std::uint8_t(i % 11 == 0 ? seed : i % 7);
   for (std::size_t i = 0; i < 65536; ++i) b->many_names[i] = GLuint(i < 4 ? 1 + (seed + i) % 9 : 1000 + i);
   ListCalls list_calls;
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, seed % 2 ? 16 : 0, nullptr);
   if (!ctx) return 0;
   if (!OSMesaMakeCurrent(ctx, b->color.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
     OSMesaDestroyContext(ctx);
@@ -135,7 +147,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 51) {
+    switch (in.byte() % 59) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -272,6 +284,44 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         GLint w, h, bytes;
         void* depth = nullptr;
         (void)OSMesaGetDepthBuffer(ctx, &w, &h, &bytes, &depth);
+        break;
+      }
+      case 51: glRasterPos4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 52:  // bitmaps of every size and unpack state, read from our pixel buffer
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        glBitmap(in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.number(), in.number(), in.number(),
+                 in.number(), in.byte() % 8 ? b->pixels : nullptr);
+        break;
+      case 53:
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        glDrawPixels(in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.any_enum(), in.any_enum(), b->pixels);
+        break;
+      case 54:
+        glCopyPixels(in.small(-kSize, kSize), in.small(-kSize, kSize), in.small(-1, 2 * kSize), in.small(-1, 2 * kSize),
+                     in.any_enum());
+        break;
+      case 55: glPixelZoom(in.number(), in.number()); break;
+      case 56: {  // transfer modes and maps (values from our buffer, as floats or integers)
+        glPixelTransferf(in.any_enum(), in.number());
+        const int n = in.small(-1, 260);
+        const GLenum map = in.any_enum();
+        const int kind = in.byte() % 3;
+        if (kind == 0) glPixelMapfv(map, n, reinterpret_cast<const GLfloat*>(b->pixels));
+        else if (kind == 1) glPixelMapuiv(map, n, reinterpret_cast<const GLuint*>(b->pixels));
+        else glPixelMapusv(map, n, reinterpret_cast<const GLushort*>(b->pixels));
+        break;
+      }
+      case 57:
+        glClearAccum(in.number(), in.number(), in.number(), in.number());
+        glAccum(in.any_enum(), in.number());
+        break;
+      case 58: {
+        glDrawBuffer(in.any_enum());
+        glReadBuffer(in.any_enum());
+        const GLenum map = in.any_enum();
+        glGetPixelMapfv(map, reinterpret_cast<GLfloat*>(b->pixels));
+        glGetPixelMapuiv(map, reinterpret_cast<GLuint*>(b->pixels));
+        glGetPixelMapusv(map, reinterpret_cast<GLushort*>(b->pixels));
         break;
       }
     }

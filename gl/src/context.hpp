@@ -22,6 +22,7 @@
 #include <glm/vec4.hpp>
 
 #include "gl/src/dlist_state.hpp"
+#include "gl/src/pixel_state.hpp"
 #include "gl/src/primitive.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
@@ -354,6 +355,9 @@ struct GlContext {
   FogSettings fog;
   TextureState textures;
   PixelStore pack, unpack;
+  PixelTransfer pixel;         // glPixelTransfer, glPixelMap, glPixelZoom
+  RasterPosition raster_pos;   // glRasterPos
+  BufferState buffers;         // glDrawBuffer, glReadBuffer, the accumulation buffer
   ClientArrays arrays;
   ListState lists;
   std::vector<AttribRecord> attrib_stack;              // glPushAttrib
@@ -467,6 +471,19 @@ void for_listed_tiles(GlContext& c, const Fn& fn) {
   if (c.pipeline && m.list.size() >= 16) c.pipeline->parallel_for(runs, 1, rects);
   else rects(0, runs);
 }
+
+/// Sets what the context's visual gives it (buffers.cpp): a double-buffered colour buffer
+/// (GL_DRAW_BUFFER and GL_READ_BUFFER start as GL_BACK) and accumulation bits per channel.
+void configure_buffers(GlContext& c, bool double_buffered, int accum_bits);
+/// Whether drawing writes colour (GL_DRAW_BUFFER is not GL_NONE).
+bool draws_color(const GlContext& c);
+/// glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer (if any) to glClearAccum's value,
+/// inside the scissor box when the scissor test is on (accum.cpp).
+void clear_accum(GlContext& c);
+/// The scissor box cut to the framebuffer, [x0, x1) x [y0, y1), when the scissor test is on
+/// and leaves some pixel of the framebuffer out; false (the box not set) when every pixel
+/// passes (fragment.cpp, GL 1.1 section 4.1.2).
+bool scissor_box(const GlContext& c, int& x0, int& y0, int& x1, int& y1);
 
 /// The flag behind a glEnable capability (nullptr: not accepted) and behind a client array.
 bool* capability_flag(GlContext& c, GLenum cap);

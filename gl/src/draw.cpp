@@ -86,7 +86,8 @@ FragmentState fragment_state(const GlContext& c) {
   f.depth_func = compare_func(r.depth_func);
   f.depth_write = r.depth_mask;
   f.blend = {r.blend, blend_factor(r.blend_src), blend_factor(r.blend_dst)};
-  for (int i = 0; i < 4; ++i) f.color_mask[i] = r.color_mask[std::size_t(i)];
+  // glDrawBuffer(GL_NONE) writes no colour (GL 1.1 section 4.2.1).
+  for (int i = 0; i < 4; ++i) f.color_mask[i] = r.color_mask[std::size_t(i)] && draws_color(c);
   StencilState& s = f.stencil;
   s.enabled = r.stencil_test && c.stencil_bits > 0;
   s.func = compare_func(r.stencil_func);
@@ -406,6 +407,16 @@ bool provoking_last(const PrimitiveTriangle& t, Triangle& out) {
 }
 
 }  // namespace
+
+FragmentState rectangle_fragment_state(const GlContext& c) { return fragment_state(c); }
+
+ShadeState rectangle_shade_state(GlContext& c) {
+  ShadeState shade;
+  shade.lighting = false;
+  shade.texture = active_texture(c);
+  shade.texture_env = env_mode(c.textures.env_mode);
+  return shade;
+}
 
 bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from_elements, std::size_t count,
                      const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,

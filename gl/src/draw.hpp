@@ -27,6 +27,13 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position);
 /// next flush).
 void end_primitive(GlContext& c);
 
+/// The per-fragment state of every fragment the context draws (the fragments of glDrawPixels,
+/// glCopyPixels and glBitmap use it with draw_fragments, GL 1.1 sections 3.6.4, 3.7).
+FragmentState rectangle_fragment_state(const GlContext& c);
+/// How those fragments are coloured: the active texture and its environment (and every
+/// per-fragment colour operation a primitive's fragments get after texturing); no lighting.
+ShadeState rectangle_shade_state(GlContext& c);
+
 /// Fills object-space attributes of array elements first .. first + n - 1: positions,
 /// normals and, when their pointers are not null, colours (unused under lighting) and
 /// texture coordinates, taking the current value where an array is disabled.

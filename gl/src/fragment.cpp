@@ -4,6 +4,7 @@
 // fragment. glClear clears the framebuffer tile by tile (with the pipeline, each tile is
 // cleared by the draw that next draws into it), or the scissor box's pixels at once.
 #include <algorithm>
+#include <cmath>
 #include <bit>
 #include <cstddef>
 #include <cstring>
@@ -125,9 +126,12 @@ void clear_color(GlContext& c) {
   for (std::uint8_t& f : c.tiles.flags) f = TileMap::kChanged | (f & TileMap::kDepthClear);
 }
 
-// Tiles that still hold the same clear depth are left as they are.
+// Tiles that still hold the same clear depth are left as they are. The value is the one
+// Mesa's depth buffer holds: truncated to its 24 (or 16) bits, as llvmpipe clears (glReadPixels
+// of depth returns it to the bit).
 void clear_depth(GlContext& c) {
-  float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
+  const double max = c.depth_bits == 16 ? 65535.0 : 16777215.0;
+  const float d = float(std::floor(std::clamp(c.raster.clear_depth, 0.0, 1.0) * max) / max);
   make_pipeline(c);
   list_tiles_to_clear(c, TileMap::kDepthClear, std::bit_cast<std::uint32_t>(d) == std::bit_cast<std::uint32_t>(c.tiles.clear_depth));
   c.tiles.clear_depth = d;
@@ -143,18 +147,6 @@ void clear_stencil(GlContext& c) {
       s = std::uint8_t((s & ~write) | (value & write));
     }
   });
-}
-
-// The scissor box cut to the framebuffer, [x0, x1) x [y0, y1), when the scissor test leaves
-// some pixel of the framebuffer out (else false: a clear writes every pixel).
-bool scissor_box(const GlContext& c, int& x0, int& y0, int& x1, int& y1) {
-  const RasterState& r = c.raster;
-  if (!r.scissor_test) return false;
-  const long w = c.fb.width, h = c.fb.height;
-  x0 = int(std::clamp<long>(r.scissor_x, 0, w)), y0 = int(std::clamp<long>(r.scissor_y, 0, h));
-  x1 = int(std::clamp<long>(long(r.scissor_x) + r.scissor_width, 0, w));
-  y1 = int(std::clamp<long>(long(r.scissor_y) + r.scissor_height, 0, h));
-  return !(x0 == 0 && y0 == 0 && x1 == w && y1 == h);
 }
 
 // A clear inside the scissor box (GL 1.1 section 4.2.3: the clear honours the pixel
@@ -189,6 +181,18 @@ void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y
 
 }  // namespace
 
+// The scissor box cut to the framebuffer, [x0, x1) x [y0, y1), when the scissor test leaves
+// some pixel of the framebuffer out (else false: a clear writes every pixel).
+bool scissor_box(const GlContext& c, int& x0, int& y0, int& x1, int& y1) {
+  const RasterState& r = c.raster;
+  if (!r.scissor_test) return false;
+  const long w = c.fb.width, h = c.fb.height;
+  x0 = int(std::clamp<long>(r.scissor_x, 0, w)), y0 = int(std::clamp<long>(r.scissor_y, 0, h));
+  x1 = int(std::clamp<long>(long(r.scissor_x) + r.scissor_width, 0, w));
+  y1 = int(std::clamp<long>(long(r.scissor_y) + r.scissor_height, 0, h));
+  return !(x0 == 0 && y0 == 0 && x1 == w && y1 == h);
+}
+
 void exec::ClearColor(GlContext& c, GLfloat r, GLfloat g, GLfloat b, GLfloat a) {
   c.raster.clear_color = glm::vec4(clamp01(r), clamp01(g), clamp01(b), clamp01(a));
 }
@@ -200,22 +204,27 @@ void exec::ClearDepth(GlContext& c, GLdouble depth) {
 void exec::ClearStencil(GlContext& c, GLint s) { c.raster.clear_stencil = s; }
 
 // Clears the framebuffer, or the scissor box's part of it, through the colour, depth and
-// stencil write masks. The accumulation bit is accepted; there is no accumulation buffer.
+// stencil write masks (colour not at all with glDrawBuffer(GL_NONE)), and the accumulation
+// buffer (its scissor box's part) when the context has one.
 void exec::Clear(GlContext& c, GLbitfield mask) {
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
                            GL_ACCUM_BUFFER_BIT;
   if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
   int x0, y0, x1, y1;
   if (scissor_box(c, x0, y0, x1, y1)) {
-    return clear_box(c, mask & GL_COLOR_BUFFER_BIT, (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
-                     (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);
+    clear_box(c, (mask & GL_COLOR_BUFFER_BIT) && draws_color(c),
+              (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
+              (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);
+    if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
+    return;
   }
   c.tiles.ahead.clear();
-  if (mask & GL_COLOR_BUFFER_BIT) clear_color(c);
+  if ((mask & GL_COLOR_BUFFER_BIT) && draws_color(c)) clear_color(c);
   if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
     clear_depth(c);
   }
   if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
+  if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
   // Started last: the clears above would wait for it.
   if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
 }

@@ -161,16 +161,56 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
     case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;
-    case GL_INDEX_BITS: case GL_AUX_BUFFERS: case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS:
-    case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS: out = ints({0}); return true;
+    case GL_INDEX_BITS: case GL_AUX_BUFFERS: out = ints({0}); return true;
     case GL_RGBA_MODE: out = make(Kind::kBool, {1}); return true;
-    case GL_INDEX_MODE: case GL_DOUBLEBUFFER: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
-    case GL_DRAW_BUFFER: case GL_READ_BUFFER: out = ints({double(c.double_buffered ? GL_BACK : GL_FRONT)}); return true;
+    case GL_INDEX_MODE: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
+    case GL_DOUBLEBUFFER: out = make(Kind::kBool, {double(c.double_buffered)}); return true;
     case GL_RENDER_MODE: out = ints({GL_RENDER}); return true;
     // Colour-index state, kept in an RGBA context as Mesa keeps it.
     case GL_INDEX_CLEAR_VALUE: out = ints({double(r.clear_index)}); return true;
     case GL_INDEX_WRITEMASK: out = ints({double(GLint(r.index_mask))}); return true;
     case GL_CURRENT_RASTER_INDEX: out = ints({1}); return true;
+    default: return false;
+  }
+}
+
+// The raster position, pixel transfer and zoom, the colour buffers and the accumulation
+// buffer (GL 1.1 tables 6.6, 6.17, 6.18, 6.11, 6.26).
+bool query_pixels(const GlContext& c, GLenum pname, Values& out) {
+  const RasterPosition& r = c.raster_pos;
+  const PixelTransfer& p = c.pixel;
+  if (pname >= GL_PIXEL_MAP_I_TO_I_SIZE && pname <= GL_PIXEL_MAP_A_TO_A_SIZE) {
+    out = ints({double(p.maps.maps[pname - GL_PIXEL_MAP_I_TO_I_SIZE].size())});
+    return true;
+  }
+  switch (pname) {
+    case GL_CURRENT_RASTER_POSITION: out = vec(Kind::kFloat, glm::value_ptr(r.window), 4); return true;
+    case GL_CURRENT_RASTER_POSITION_VALID: out = make(Kind::kBool, {double(r.valid)}); return true;
+    case GL_CURRENT_RASTER_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.color), 4); return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(r.texcoord), 4); return true;
+    case GL_CURRENT_RASTER_DISTANCE: out = make(Kind::kFloat, {r.distance}); return true;
+    case GL_CURRENT_RASTER_INDEX: out = make(Kind::kFloat, {r.index}); return true;
+    case GL_RED_SCALE: case GL_GREEN_SCALE: case GL_BLUE_SCALE: case GL_ALPHA_SCALE:
+      out = make(Kind::kFloat, {p.scale[pname == GL_RED_SCALE ? 0 : pname == GL_GREEN_SCALE ? 1 : pname == GL_BLUE_SCALE ? 2 : 3]});
+      return true;
+    case GL_RED_BIAS: case GL_GREEN_BIAS: case GL_BLUE_BIAS: case GL_ALPHA_BIAS:
+      out = make(Kind::kFloat, {p.bias[pname == GL_RED_BIAS ? 0 : pname == GL_GREEN_BIAS ? 1 : pname == GL_BLUE_BIAS ? 2 : 3]});
+      return true;
+    case GL_DEPTH_SCALE: out = make(Kind::kFloat, {p.depth_scale}); return true;
+    case GL_DEPTH_BIAS: out = make(Kind::kFloat, {p.depth_bias}); return true;
+    case GL_INDEX_SHIFT: out = ints({double(p.index_shift)}); return true;
+    case GL_INDEX_OFFSET: out = ints({double(p.index_offset)}); return true;
+    case GL_MAP_COLOR: out = make(Kind::kBool, {double(p.map_color)}); return true;
+    case GL_MAP_STENCIL: out = make(Kind::kBool, {double(p.map_stencil)}); return true;
+    case GL_ZOOM_X: out = make(Kind::kFloat, {p.zoom_x}); return true;
+    case GL_ZOOM_Y: out = make(Kind::kFloat, {p.zoom_y}); return true;
+    case GL_MAX_PIXEL_MAP_TABLE: out = ints({kMaxPixelMapTable}); return true;
+    case GL_DRAW_BUFFER: out = ints({double(c.buffers.draw_buffer)}); return true;
+    case GL_READ_BUFFER: out = ints({double(c.buffers.read_buffer)}); return true;
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+      out = ints({double(c.buffers.accum_bits)});
+      return true;
+    case GL_ACCUM_CLEAR_VALUE: out = vec(Kind::kColor, glm::value_ptr(c.buffers.accum_clear), 4); return true;
     default: return false;
   }
 }
@@ -203,7 +243,7 @@ bool query(GlContext& c, GLenum pname, Values& out) {
   if (bool* f = capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
   if (bool* f = client_capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
   return query_transform_lighting(c, pname, out) || query_raster(c, pname, out) ||
-         query_limits(c, pname, out) || query_client(c, pname, out);
+         query_limits(c, pname, out) || query_client(c, pname, out) || query_pixels(c, pname, out);
 }
 
 template <class T>

@@ -28,12 +28,14 @@ void choose_bits(GLint depth, GLint stencil, int& depth_bits, int& stencil_bits)
   else depth_bits = 0;
 }
 
-OSMesaContext create(GLenum format, GLint depth, GLint stencil, OSMesaContext share) {
+OSMesaContext create(GLenum format, GLint depth, GLint stencil, GLint accum, OSMesaContext share) {
   if (!supported_format(format)) return nullptr;
   int depth_bits = 0, stencil_bits = 0;
   choose_bits(depth, stencil, depth_bits, stencil_bits);
   try {
-    return new osmesa_context(format, depth_bits, stencil_bits, share);
+    auto* c = new osmesa_context(format, depth_bits, stencil_bits, share);
+    configure_buffers(*c, false, accum);  // an OSMesa buffer is single-buffered
+    return c;
   } catch (...) {
     return nullptr;
   }
@@ -58,32 +60,32 @@ void bind_buffer(GlContext& c, void* buffer, int width, int height) {
 extern "C" {
 
 OSMesaContext GLAPIENTRY OSMesaCreateContext(GLenum format, OSMesaContext sharelist) {
-  return create(format, 24, 8, sharelist);
+  return create(format, 24, 8, 0, sharelist);
 }
 
 OSMesaContext GLAPIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits,
-                                                GLint /*accumBits*/, OSMesaContext sharelist) {
-  return create(format, depthBits, stencilBits, sharelist);
+                                                GLint accumBits, OSMesaContext sharelist) {
+  return create(format, depthBits, stencilBits, accumBits, sharelist);
 }
 
 // Attributes as Mesa reads them; only OpenGL 1.x compatibility contexts can be had.
 OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMesaContext sharelist) {
   GLenum format = OSMESA_RGBA;
-  GLint depth = 24, stencil = 8;
+  GLint depth = 24, stencil = 8, accum = 0;
   for (int i = 0; attribList && i < 64 && attribList[i] != 0; i += 2) {
     int value = attribList[i + 1];
     switch (attribList[i]) {
       case OSMESA_FORMAT: format = GLenum(value); break;
       case OSMESA_DEPTH_BITS: depth = value; break;
       case OSMESA_STENCIL_BITS: stencil = value; break;
-      case OSMESA_ACCUM_BITS: break;
+      case OSMESA_ACCUM_BITS: accum = value; break;
       case OSMESA_PROFILE: if (value != OSMESA_COMPAT_PROFILE) return nullptr; break;
       case OSMESA_CONTEXT_MAJOR_VERSION: if (value > 1) return nullptr; break;
       case OSMESA_CONTEXT_MINOR_VERSION: break;
       default: return nullptr;
     }
   }
-  return create(format, depth, stencil, sharelist);
+  return create(format, depth, stencil, accum, sharelist);
 }
 
 void GLAPIENTRY OSMesaDestroyContext(OSMesaContext ctx) {

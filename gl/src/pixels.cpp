@@ -1,8 +1,6 @@
-// Pixel memory layout and component conversion (GL 1.1 sections 3.6.3, 4.3.2), and
-// glReadPixels, which packs the framebuffer into client memory. Reads the framebuffer only.
+// Client pixel memory (GL 1.1 sections 3.6.3, 4.3.2): its layout under glPixelStore, and the
+// conversion of its elements to and from floats (table 2.6). No GL state, no framebuffer.
 #include "gl/src/pixels.hpp"
-
-#include "gl/generated/exec.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -139,77 +137,118 @@ void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[
   }
 }
 
+int format_components(GLenum format) {
+  if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) return 1;
+  return color_format_components(format);
+}
+
+bool is_color_format(GLenum format) { return color_format_components(format) > 0; }
+
+GLenum format_type_error(GLenum format, GLenum type) {
+  if (format_components(format) == 0) return GL_INVALID_ENUM;
+  if (type == GL_BITMAP) {
+    return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
+  }
+  return pixel_type_size(type) > 0 ? GL_NO_ERROR : GL_INVALID_ENUM;
+}
+
 namespace {
 
-// The components of `format` taken from a framebuffer pixel (GL 1.1 section 4.3.2:
-// luminance is R + G + B, clamped).
-int pack_color(const std::uint8_t* px, GLenum format, float out[4]) {
-  float r = px[0] / 255.0f, g = px[1] / 255.0f, b = px[2] / 255.0f, a = px[3] / 255.0f;
-  float l = std::min(r + g + b, 1.0f);
-  switch (format) {
-    case GL_RED: out[0] = r; return 1;
-    case GL_GREEN: out[0] = g; return 1;
-    case GL_BLUE: out[0] = b; return 1;
-    case GL_ALPHA: out[0] = a; return 1;
-    case GL_LUMINANCE: out[0] = l; return 1;
-    case GL_LUMINANCE_ALPHA: out[0] = l, out[1] = a; return 2;
-    case GL_RGB: out[0] = r, out[1] = g, out[2] = b; return 3;
-    case GL_BGR: out[0] = b, out[1] = g, out[2] = r; return 3;
-    case GL_RGBA: out[0] = r, out[1] = g, out[2] = b, out[3] = a; return 4;
-    case GL_BGRA: out[0] = b, out[1] = g, out[2] = r, out[3] = a; return 4;
-    default: return 0;
-  }
+// Bytes per row of a GL_BITMAP image (GL 1.1 section 3.6.3: a multiple of the alignment).
+std::size_t bitmap_row_bytes(const PixelStore& s, int width) {
+  const std::size_t bits = std::size_t(s.row_length > 0 ? s.row_length : width);
+  const std::size_t align = std::size_t(s.alignment);
+  return (bits + 8 * align - 1) / (8 * align) * align;
 }
 
-// One framebuffer pixel as `format`/`type` at `dst`.
-void pack_pixel(const GlContext& c, std::size_t i, GLenum format, GLenum type, unsigned char* dst) {
-  int size = pixel_type_size(type);
-  if (format == GL_DEPTH_COMPONENT) return write_component(dst, type, c.fb.depth[i]);
-  if (format == GL_STENCIL_INDEX) {
-    // Stencil indices are integers, not normalized (GL 1.1 section 4.3.2).
-    std::uint8_t s = c.fb.stencil[i];
-    if (type == GL_FLOAT) return store(dst, GLfloat(s));
-    if (size == 1) return store(dst, GLubyte(s));
-    if (size == 2) return store(dst, GLushort(s));
-    return store(dst, GLuint(s));
-  }
-  float v[4];
-  int n = pack_color(&c.fb.color[i * 4], format, v);
-  for (int k = 0; k < n; ++k) write_component(dst + k * size, type, v[k]);
-}
-
-int read_components(GLenum format) {
-  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) return 1;
-  return color_format_components(format);
+// Where bit x of row y of a GL_BITMAP image is: its byte and the bit's mask in it.
+std::size_t bitmap_byte(const PixelStore& s, std::size_t row_bytes, int x, int y, unsigned& mask) {
+  const std::size_t bit = std::size_t(s.skip_pixels) + std::size_t(x);
+  mask = s.lsb_first ? 1u << (bit % 8) : 0x80u >> (bit % 8);
+  return (std::size_t(s.skip_rows) + std::size_t(y)) * row_bytes + bit / 8;
 }
 
 }  // namespace
 
-// Pixels outside the framebuffer are left as they are in client memory (GL leaves them
-// undefined).
-void exec::ReadPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei height, GLenum format,
-                      GLenum type, void* pixels) {
-  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
-  if (format == GL_COLOR_INDEX) return c.set_error(GL_INVALID_OPERATION);  // RGBA mode
-  int n = read_components(format), size = pixel_type_size(type);
-  if (n == 0 || size == 0) return c.set_error(GL_INVALID_ENUM);
-  if ((format == GL_DEPTH_COMPONENT && c.depth_bits == 0) ||
-      (format == GL_STENCIL_INDEX && c.stencil_bits == 0)) {
-    return c.set_error(GL_INVALID_OPERATION);
-  }
-  if (width == 0 || height == 0) return;
-  if (!pixels) return c.set_error(GL_INVALID_VALUE);
-  settle_clears(c);
-  PixelLayout layout = pixel_layout(c.pack, n, size, width);
-  auto* out = static_cast<unsigned char*>(pixels);
-  int x0 = std::max(0, -x), y0 = std::max(0, -y);
-  int x1 = int(std::min<long long>(width, (long long)c.fb.width - x));
-  int y1 = int(std::min<long long>(height, (long long)c.fb.height - y));
-  for (int j = y0; j < y1; ++j) {
-    for (int i = x0; i < x1; ++i) {
-      std::size_t px = std::size_t(y + j) * std::size_t(c.fb.width) + std::size_t(x + i);
-      pack_pixel(c, px, format, type, out + layout.offset(i, j));
+ClientImage::ClientImage(const PixelStore& store, const void* pixels, int width, GLenum format, GLenum type)
+    : base_(static_cast<const unsigned char*>(pixels)), store_(store), type_(type),
+      components_(format_components(format)), size_(pixel_type_size(type)) {
+  if (type == GL_BITMAP) bitmap_row_ = bitmap_row_bytes(store, width);
+  else layout_ = pixel_layout(store, components_, size_, width);
+}
+
+const unsigned char* ClientImage::element(int x, int y, int k, unsigned char swapped[4]) const {
+  const unsigned char* p = base_ + layout_.offset(x, y) + std::size_t(k) * std::size_t(size_);
+  if (!store_.swap_bytes || size_ == 1) return p;
+  for (int i = 0; i < size_; ++i) swapped[i] = p[size_ - 1 - i];
+  return swapped;
+}
+
+float ClientImage::component(int x, int y, int k) const {
+  unsigned char swapped[4];
+  return read_component(element(x, y, k, swapped), type_);
+}
+
+std::int64_t ClientImage::index(int x, int y) const {
+  if (type_ == GL_BITMAP) return bit(x, y) ? 1 : 0;
+  unsigned char tmp[4];
+  const unsigned char* p = element(x, y, 0, tmp);
+  switch (type_) {
+    case GL_UNSIGNED_BYTE: return load<GLubyte>(p);
+    case GL_BYTE: return load<GLbyte>(p);
+    case GL_UNSIGNED_SHORT: return load<GLushort>(p);
+    case GL_SHORT: return load<GLshort>(p);
+    case GL_UNSIGNED_INT: return load<GLuint>(p);
+    case GL_INT: return load<GLint>(p);
+    case GL_FLOAT: {
+      const float f = load<GLfloat>(p);
+      return f == f ? std::int64_t(std::clamp(f, -4e18f, 4e18f)) : 0;
     }
+    default: return 0;
+  }
+}
+
+bool ClientImage::bit(int x, int y) const {
+  unsigned mask = 0;
+  return (base_[bitmap_byte(store_, bitmap_row_, x, y, mask)] & mask) != 0;
+}
+
+ClientImageWriter::ClientImageWriter(const PixelStore& store, void* pixels, int width, GLenum format, GLenum type)
+    : base_(static_cast<unsigned char*>(pixels)), store_(store), size_(pixel_type_size(type)) {
+  if (type == GL_BITMAP) bitmap_row_ = bitmap_row_bytes(store, width);
+  else layout_ = pixel_layout(store, format_components(format), size_, width);
+}
+
+void ClientImageWriter::put(int x, int y, int k, const unsigned char* bytes) {
+  unsigned char* p = base_ + layout_.offset(x, y) + std::size_t(k) * std::size_t(size_);
+  for (int i = 0; i < size_; ++i) p[i] = bytes[store_.swap_bytes ? size_ - 1 - i : i];
+}
+
+void ClientImageWriter::put_bit(int x, int y, bool on) {
+  unsigned mask = 0;
+  unsigned char& b = base_[bitmap_byte(store_, bitmap_row_, x, y, mask)];
+  b = static_cast<unsigned char>(on ? (b | mask) : (b & ~mask));
+}
+
+std::vector<unsigned char> copy_bitmap(const PixelStore& unpack, int width, int height, const void* pixels) {
+  const std::size_t row = (std::size_t(width) + 7) / 8;
+  std::vector<unsigned char> out(row * std::size_t(height), 0);
+  const ClientImage image(unpack, pixels, width, GL_COLOR_INDEX, GL_BITMAP);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      if (image.bit(x, y)) out[std::size_t(y) * row + std::size_t(x) / 8] |= static_cast<unsigned char>(0x80u >> (x % 8));
+    }
+  }
+  return out;
+}
+
+void unpack_bitmap(const PixelStore& store, const void* pixels, int width, int height,
+                   std::vector<std::uint8_t>& out) {
+  out.assign(std::size_t(width) * std::size_t(height), 0);
+  if (!pixels) return;
+  const ClientImage image(store, pixels, width, GL_COLOR_INDEX, GL_BITMAP);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) out[std::size_t(y) * std::size_t(width) + std::size_t(x)] = image.bit(x, y);
   }
 }
 

@@ -1,6 +1,9 @@
-// Client pixel memory as OpenGL 1.1 lays it out (section 3.6.3): formats, component types,
-// row alignment and skips, and conversion of components to and from [0, 1] (table 2.6, 4.3.2).
-// Used by glReadPixels (pack) and glTexImage2D (unpack). No state, no GL errors.
+// Client pixel memory as OpenGL 1.1 lays it out (sections 3.6.3, 4.3.2): formats, element
+// types, glPixelStore's row length, skips, alignment, byte swapping and bit order, and the
+// conversion of elements to and from [0, 1] (table 2.6). Shared by everything that reads or
+// writes client images: glDrawPixels, glBitmap, glReadPixels, glTexImage*, glPolygonStipple.
+// No GL state besides the PixelStore it is given, no GL errors, no pixel transfer (that is
+// pixel_transfer.hpp's).
 #pragma once
 
 #include <GL/gl.h>
@@ -61,7 +64,78 @@ void write_component(unsigned char* p, GLenum type, float v);
 std::vector<unsigned char> copy_image(const PixelStore& unpack, int width, int height,
                                       int components, int type_size, const void* pixels);
 
+/// The bits of a GL_BITMAP image of width x height read with the unpack state `unpack`
+/// (skips, row length, alignment, GL_UNPACK_LSB_FIRST), returned as rows of (width + 7) / 8
+/// bytes, most significant bit first: what a display list keeps of a bitmap (glBitmap,
+/// glDrawPixels of GL_BITMAP, glPolygonStipple), replayed with DefaultUnpack.
+std::vector<unsigned char> copy_bitmap(const PixelStore& unpack, int width, int height, const void* pixels);
+
 /// An unpacked colour pixel of `format` as RGBA (missing colour components 0, alpha 1).
 void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4]);
+
+/// Elements per pixel of any GL 1.1 pixel format (GL_COLOR_INDEX, GL_STENCIL_INDEX and
+/// GL_DEPTH_COMPONENT have one; the colour formats as color_format_components); 0 for others.
+int format_components(GLenum format);
+
+/// Whether `format` holds colour components (as opposed to an index or a depth).
+bool is_color_format(GLenum format);
+
+/// The error a format/type pair of glDrawPixels, glReadPixels or glTexImage draws when the
+/// enums themselves are wrong (GL 1.1 tables 3.5, 3.6; Mesa's codes): GL_INVALID_ENUM for an
+/// unknown format or type and for GL_BITMAP with anything but an index format; GL_NO_ERROR
+/// otherwise.
+GLenum format_type_error(GLenum format, GLenum type);
+
+/// A client image of `width`-pixel rows as glPixelStore's parameters lay it out (GL 1.1
+/// section 3.6.3 for unpacking, 4.3.2 for packing: the same layout). Pixel (x, y) is the x-th
+/// pixel of the y-th row after the skipped ones; elements are read with bytes swapped when
+/// GL_*_SWAP_BYTES is set, GL_BITMAP bits in the order GL_*_LSB_FIRST gives.
+class ClientImage {
+ public:
+  ClientImage(const PixelStore& store, const void* pixels, int width, GLenum format, GLenum type);
+
+  /// Element k of pixel (x, y) as a colour component or depth: table 2.6's conversion
+  /// (unsigned integers to [0, 1], signed to [-1, 1]), floats as they are. Not for GL_BITMAP.
+  float component(int x, int y, int k) const;
+  /// The element of pixel (x, y) of an index image as an integer (floats truncated), or its
+  /// bit for GL_BITMAP.
+  std::int64_t index(int x, int y) const;
+  /// The bit of pixel (x, y) of a GL_BITMAP image.
+  bool bit(int x, int y) const;
+
+ private:
+  const unsigned char* element(int x, int y, int k, unsigned char swapped[4]) const;
+
+  const unsigned char* base_;
+  PixelStore store_;
+  GLenum type_;
+  int components_, size_;
+  PixelLayout layout_;
+  std::size_t bitmap_row_ = 0;  // bytes per row of a GL_BITMAP image
+};
+
+/// Writes elements of a client image laid out as ClientImage reads them (the pack direction:
+/// glReadPixels, glGetTexImage): bytes swapped when GL_PACK_SWAP_BYTES is set, GL_BITMAP bits in
+/// GL_PACK_LSB_FIRST's order (the other bits of a byte kept).
+class ClientImageWriter {
+ public:
+  ClientImageWriter(const PixelStore& store, void* pixels, int width, GLenum format, GLenum type);
+  /// Element k of pixel (x, y): `bytes` holds it in the element type, native byte order.
+  void put(int x, int y, int k, const unsigned char* bytes);
+  void put_bit(int x, int y, bool on);
+  int element_size() const { return size_; }
+
+ private:
+  unsigned char* base_;
+  PixelStore store_;
+  int size_;
+  PixelLayout layout_;
+  std::size_t bitmap_row_ = 0;
+};
+
+/// A GL_BITMAP image of width x height as one byte (0 or 1) per pixel, row 0 first: glBitmap's
+/// and glPolygonStipple's unpacking (GL 1.1 sections 3.7, 3.5.2).
+void unpack_bitmap(const PixelStore& store, const void* pixels, int width, int height,
+                   std::vector<std::uint8_t>& out);
 
 }  // namespace shadelab::gl

@@ -1,5 +1,7 @@
 // glEnable/glDisable/glIsEnabled, client state, glGetError, glHint, glPixelStore, glFinish and
 // glFlush (GL 1.1 sections 2.5, 2.8, 5.6, 5.5, 3.6.1). State only; nothing is drawn here.
+#include <cmath>
+
 #include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 
@@ -86,8 +88,8 @@ void pixel_store(GlContext& c, GLenum pname, double value) {
   PixelStore& s = pack ? c.pack : c.unpack;
   GLenum base = pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES;
   GLenum which = pname - base;  // 0 swap, 1 lsb, 2 row length, 3 skip rows, 4 skip pixels, 5 align
-  if (which <= 1) {
-    (which == 0 ? s.swap_bytes : s.lsb_first) = value != 0.0;
+  if (which <= 1) {  // glPixelStoref rounds its value first, as Mesa does
+    (which == 0 ? s.swap_bytes : s.lsb_first) = std::fabs(value) >= 0.5;
     return;
   }
   if (!(value >= 0.0 && value <= 1e9)) return c.set_error(GL_INVALID_VALUE);

@@ -3,8 +3,11 @@
 # NAME.shadelab.png and, on failure, NAME.diff.png.
 #
 #   cmake -DNAME=... -DOUT_DIR=... -DMESA_EXE=... [-DSHADELAB_EXE=...] -DCOMPARE=...
-#         [-DSELFCHECK=ON] [-DVALUES=ON -DVALUES_COMPARE=... [-DVALUES_REL=R]]
+#         [-DCOMPARE_ARGS=...] [-DSELFCHECK=ON] [-DVALUES=ON -DVALUES_COMPARE=... [-DVALUES_REL=R]]
 #         -P run_conformance.cmake
+#
+# COMPARE_ARGS (a ;-list) is passed on to gl_compare: --tolerance 0 --min-percent 100 for the
+# programs whose output is data compared byte for byte.
 #
 # With SHADELAB_EXE empty (libshadelab-gl not built yet) only Mesa's build runs and its image is
 # checked not to be blank. With SELFCHECK=ON Mesa's softpipe driver is compared with llvmpipe
@@ -59,7 +62,7 @@ if(VALUES)
                   RESULT_VARIABLE values_rc)
 endif()
 run_step("comparison with Mesa" ${COMPARE} ${mesa_png} ${shadelab_png} --name ${NAME}
-         --diff ${diff_png})
+         --diff ${diff_png} ${COMPARE_ARGS})
 if(VALUES AND NOT values_rc EQUAL 0)
   message(FATAL_ERROR "${NAME}: the values differ from Mesa's (gl_values above)")
 endif()

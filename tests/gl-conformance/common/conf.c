@@ -9,6 +9,10 @@
 #include <stb_image_write.h>
 
 int conf_init(ConfContext* c, int argc, char** argv, int width, int height) {
+  return conf_init_accum(c, argc, argv, width, height, 0);
+}
+
+int conf_init_accum(ConfContext* c, int argc, char** argv, int width, int height, int accum_bits) {
   c->ctx = NULL;
   c->buffer = NULL;
   c->width = width;
@@ -18,7 +22,7 @@ int conf_init(ConfContext* c, int argc, char** argv, int width, int height) {
     fprintf(stderr, "usage: %s OUTPUT.png\n", argc > 0 ? argv[0] : "program");
     return 0;
   }
-  c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+  c->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, accum_bits, NULL);
   if (!c->ctx) {
     fprintf(stderr, "OSMesaCreateContextExt failed\n");
     return 0;
@@ -80,6 +84,17 @@ void conf_value_cells(const ConfContext* c, const unsigned* values, int n, int c
 int conf_write_png(const char* path, const unsigned char* rgba, int width, int height) {
   stbi_flip_vertically_on_write(1);
   return stbi_write_png(path, width, height, 4, rgba, width * 4) != 0;
+}
+
+int conf_write_bytes_png(const char* path, const unsigned char* bytes, long n, int width) {
+  long pixels = (n + 3) / 4, rows = (pixels + width - 1) / width;
+  unsigned char* rgba = (unsigned char*)calloc((size_t)(rows * width * 4), 1);
+  if (!rgba) return 0;
+  for (long i = 0; i < n; ++i) rgba[i] = bytes[i];
+  stbi_flip_vertically_on_write(0);
+  int ok = stbi_write_png(path, width, (int)rows, 4, rgba, width * 4) != 0;
+  free(rgba);
+  return ok;
 }
 
 int conf_finish(ConfContext* c) {

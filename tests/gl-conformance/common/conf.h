@@ -26,6 +26,8 @@ typedef struct ConfContext {
 /* Creates an RGBA context (24-bit depth, 8-bit stencil) on a width x height buffer and makes
  * it current; the output path is argv[1]. Prints the reason and returns 0 on failure. */
 int conf_init(ConfContext* c, int argc, char** argv, int width, int height);
+/* The same with accumulation bits per channel asked for (OSMesaCreateContextExt's accumBits). */
+int conf_init_accum(ConfContext* c, int argc, char** argv, int width, int height, int accum_bits);
 
 /* glFinish, checks glGetError, writes the buffer as a PNG (flipped so that the PNG's first row
  * is the top of the image), destroys the context. Returns the process exit code. */
@@ -47,6 +49,10 @@ FILE* conf_open_values(const ConfContext* c);
  * hash of its value (so that a different value shows in the image too); sets the viewport,
  * both matrices and unlit drawing. */
 void conf_value_cells(const ConfContext* c, const unsigned* values, int n, int cols, int rows);
+
+/* Writes `n` bytes as a PNG of RGBA pixels, `width` pixels a row (the last row padded with
+ * zeros): data compared byte for byte by gl_compare --tolerance 0. 1 on success. */
+int conf_write_bytes_png(const char* path, const unsigned char* bytes, long n, int width);
 
 /* Reports an unexpected GL error (and where) on stderr; returns 1 if there was one. */
 int conf_check_error(const char* where);

@@ -1,0 +1,243 @@
+// glDrawPixels and glCopyPixels (GL 1.1 sections 3.6.4, 4.3.3): an image (from client memory
+// through unpacking and pixel transfer, or from the framebuffer through the transfer
+// operations) made into fragments at the current raster position, zoomed by glPixelZoom,
+// which then go through texturing, fog and every per-fragment operation (the core's
+// draw_fragments); stencil images are written into the stencil buffer through its write mask.
+// Where the specification lets an implementation choose, llvmpipe's choice is taken (the
+// position rounded to the nearest pixel, the zoomed pixels whose centres the rectangle covers
+// with its left and bottom edges included).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
+#include "gl/src/dlist.hpp"
+#include "gl/src/draw.hpp"
+#include "gl/src/pixel_transfer.hpp"
+#include "gl/src/pixels.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+// An image after unpacking and the transfer operations: colours, depths or stencil indices
+// (one of them filled) of its pixels [x0, x0 + w) x [y0, y0 + h), the only ones that make
+// fragments (a copy keeps only what lies in the framebuffer).
+struct PixelImage {
+  int width = 0, height = 0;
+  int x0 = 0, y0 = 0, w = 0, h = 0;
+  std::vector<glm::vec4> colors;
+  std::vector<float> depths;
+  std::vector<std::uint8_t> stencil;
+
+  // The stored index of image pixel (x, y), or -1 when it makes no fragment.
+  long long at(int x, int y) const {
+    if (x < x0 || y < y0 || x >= x0 + w || y >= y0 + h) return -1;
+    return (long long)(y - y0) * w + (x - x0);
+  }
+};
+
+// The window pixels a zoomed row or column of `n` image pixels covers from `start` (section
+// 3.6.4): those whose centre lies in [start, start + n zoom) (in [start + n zoom, start) when
+// the zoom is negative), clipped to [0, limit); and the image pixel each shows.
+struct ZoomedSpan {
+  int first = 0, end = 0;  // window pixels [first, end)
+  int start;
+  float zoom;
+  int n;
+  int source(int pixel) const {
+    const double s = std::floor((double(pixel) + 0.5 - start) / zoom);
+    return int(std::clamp(s, 0.0, double(n - 1)));  // a centre on the far edge shows the last one
+  }
+};
+
+ZoomedSpan zoomed_span(int start, int n, float zoom, int limit) {
+  ZoomedSpan z{0, 0, start, zoom, n};
+  // The far edge in single precision, as Mesa places its quad.
+  const float far_edge = float(start) + float(n) * zoom;
+  const double lo = std::min<double>(start, far_edge), hi = std::max<double>(start, far_edge);
+  z.first = int(std::clamp(std::ceil(lo - 0.5), 0.0, double(limit)));
+  z.end = int(std::clamp(std::ceil(hi - 0.5), 0.0, double(limit)));
+  if (z.end < z.first) z.end = z.first;
+  return z;
+}
+
+// Texture coordinates (s / q, t / q) of the raster position.
+glm::vec2 raster_texcoord(const RasterPosition& r) {
+  const glm::vec4& t = r.texcoord;
+  return t.w != 0.0f && t.w != 1.0f ? glm::vec2(t.x / t.w, t.y / t.w) : glm::vec2(t.x, t.y);
+}
+
+// A stencil image written through the write mask and the scissor box: the pixel ownership
+// and scissor tests and nothing else apply (section 4.3.1; llvmpipe draws it with the
+// scissor on and every other test off).
+void write_stencil(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
+  settle_clears(c);
+  const std::uint8_t mask = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
+  int x0 = 0, y0 = 0, x1 = c.fb.width, y1 = c.fb.height;
+  scissor_box(c, x0, y0, x1, y1);  // unchanged when every pixel passes
+  for (int y = std::max(ys.first, y0); y < std::min(ys.end, y1); ++y) {
+    const int sy = ys.source(y);
+    for (int x = std::max(xs.first, x0); x < std::min(xs.end, x1); ++x) {
+      const long long i = img.at(xs.source(x), sy);
+      if (i < 0) continue;
+      std::uint8_t& s = c.fb.stencil[std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x)];
+      s = std::uint8_t((s & ~mask) | (img.stencil[std::size_t(i)] & mask));
+    }
+  }
+}
+
+// The zoomed image's fragments with their colours (or the raster colour and their depths)
+// through draw_fragments.
+void draw_fragments_of(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
+  const RasterPosition& r = c.raster_pos;
+  FragmentRect rect;
+  rect.x = xs.first, rect.y = ys.first;
+  rect.width = xs.end - xs.first, rect.height = ys.end - ys.first;
+  const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+  std::vector<glm::vec4> colors;
+  std::vector<float> depths;
+  std::vector<std::uint8_t> mask;
+  const bool color = !img.colors.empty();
+  if (color) colors.resize(n);
+  else depths.resize(n);
+  const bool whole = img.w == img.width && img.h == img.height;
+  if (!whole) mask.resize(n);
+  for (int y = 0; y < rect.height; ++y) {
+    const int sy = ys.source(ys.first + y);
+    for (int x = 0; x < rect.width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(rect.width) + std::size_t(x);
+      const long long s = img.at(xs.source(xs.first + x), sy);
+      if (!whole) mask[i] = s >= 0;
+      if (s < 0) continue;
+      if (color) colors[i] = img.colors[std::size_t(s)];
+      else depths[i] = img.depths[std::size_t(s)];
+    }
+  }
+  const glm::vec4 raster_color = r.color;
+  rect.colors = color ? std::span<const glm::vec4>(colors) : std::span<const glm::vec4>(&raster_color, 1);
+  rect.depth = r.window.z;
+  rect.depths = depths;
+  rect.mask = mask;
+  rect.texcoord = raster_texcoord(r);
+  rect.fog_coord = r.distance;  // section 3.6.4: the raster position's (Mesa takes 0)
+  make_pipeline(c);
+  draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, nullptr, c.pipeline.get());
+  mark_dirty(c, rect.x, rect.y, rect.x + rect.width, rect.y + rect.height);
+}
+
+// A depth value as llvmpipe writes a fragment's own depth into its 24-bit (or 16-bit) buffer:
+// scaled in single precision and rounded to the nearest (glReadPixels then returns those bits).
+float stored_depth(const GlContext& c, float d) {
+  const float max = c.depth_bits == 16 ? 65535.0f : 16777215.0f;
+  return float(double(std::nearbyint(d * max)) / double(max));
+}
+
+// Draws an image with its lower left corner at window pixel (x, y), zoomed (section 3.6.4).
+void draw_image(GlContext& c, int x, int y, PixelImage& img) {
+  for (float& d : img.depths) d = stored_depth(c, d);
+  const ZoomedSpan xs = zoomed_span(x, img.width, c.pixel.zoom_x, c.fb.width);
+  const ZoomedSpan ys = zoomed_span(y, img.height, c.pixel.zoom_y, c.fb.height);
+  if (xs.first >= xs.end || ys.first >= ys.end) return;
+  if (!img.stencil.empty()) write_stencil(c, img, xs, ys);
+  else draw_fragments_of(c, img, xs, ys);
+}
+
+// The raster position rounded to a pixel, as Mesa rounds it (halves away from zero). glBitmap
+// may have moved it anywhere, even to infinity.
+int raster_pixel(float v) { return v == v ? int(std::lround(std::clamp(v, -1e9f, 1e9f))) : 0; }
+
+GLenum draw_error(const GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type) {
+  if (width < 0 || height < 0) return GL_INVALID_VALUE;
+  if (const GLenum e = format_type_error(format, type); e != GL_NO_ERROR) return e;
+  if ((format == GL_STENCIL_INDEX && c.stencil_bits == 0) || (format == GL_DEPTH_COMPONENT && c.depth_bits == 0)) {
+    return GL_INVALID_OPERATION;
+  }
+  return GL_NO_ERROR;
+}
+
+void unpack_image(const GlContext& c, const void* pixels, GLenum format, GLenum type, PixelImage& img) {
+  if (format == GL_STENCIL_INDEX) unpack_stencil_image(c, pixels, img.width, img.height, type, img.stencil);
+  else if (format == GL_DEPTH_COMPONENT) unpack_depth_image(c, pixels, img.width, img.height, type, img.depths);
+  else unpack_color_image(c, pixels, img.width, img.height, format, type, img.colors);
+}
+
+// The framebuffer's pixels of a copy (section 4.3.3: as glReadPixels reads them, through the
+// transfer operations); pixels outside the framebuffer make no fragments (GL leaves them
+// undefined).
+void read_source(const GlContext& c, int sx, int sy, GLenum type, PixelImage& img) {
+  img.x0 = int(std::clamp<long long>(-(long long)sx, 0, img.width));
+  img.y0 = int(std::clamp<long long>(-(long long)sy, 0, img.height));
+  img.w = int(std::clamp<long long>((long long)c.fb.width - sx, img.x0, img.width)) - img.x0;
+  img.h = int(std::clamp<long long>((long long)c.fb.height - sy, img.y0, img.height)) - img.y0;
+  const std::size_t n = std::size_t(img.w) * std::size_t(img.h);
+  if (type == GL_COLOR) img.colors.resize(n);
+  else if (type == GL_DEPTH) img.depths.resize(n);
+  else img.stencil.resize(n);
+  for (int y = 0; y < img.h; ++y) {
+    for (int x = 0; x < img.w; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(img.w) + std::size_t(x);
+      const std::size_t p = std::size_t(sy + img.y0 + y) * std::size_t(c.fb.width) + std::size_t(sx + img.x0 + x);
+      if (type == GL_DEPTH) {
+        img.depths[i] = transfer_depth(c.pixel, c.fb.depth[p]);
+      } else if (type == GL_STENCIL) {
+        img.stencil[i] = transfer_stencil(c.pixel, c.fb.stencil[p]);
+      } else {
+        const std::uint8_t* px = &c.fb.color[p * 4];
+        const glm::vec4 v = transfer_color(c.pixel, glm::vec4(px[0], px[1], px[2], px[3]) * (1.0f / 255.0f));
+        img.colors[i] = glm::clamp(v, glm::vec4(0.0f), glm::vec4(1.0f));
+      }
+    }
+  }
+}
+
+GLenum copy_error(const GlContext& c, GLsizei width, GLsizei height, GLenum type) {
+  if (width < 0 || height < 0) return GL_INVALID_VALUE;
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return GL_INVALID_ENUM;
+  if ((type == GL_COLOR && c.buffers.read_buffer == GL_NONE) || (type == GL_DEPTH && c.depth_bits == 0) ||
+      (type == GL_STENCIL && c.stencil_bits == 0)) {
+    return GL_INVALID_OPERATION;
+  }
+  return GL_NO_ERROR;
+}
+
+}  // namespace
+
+void exec::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type,
+                      const void* pixels) {
+  if (const GLenum e = draw_error(c, width, height, format, type); e != GL_NO_ERROR) return c.set_error(e);
+  if (!c.raster_pos.valid || width == 0 || height == 0) return;
+  // Mesa reports a missing image as a failed allocation of the texture it would make of it.
+  if (!pixels) return c.set_error(GL_OUT_OF_MEMORY);
+  PixelImage img;
+  img.width = img.w = width, img.height = img.h = height;
+  unpack_image(c, pixels, format, type, img);
+  draw_image(c, raster_pixel(c.raster_pos.window.x), raster_pixel(c.raster_pos.window.y), img);
+}
+
+// In a display list the image is kept as the unpack state of the moment reads it (GL 1.1
+// section 5.4), tightly packed (GL_BITMAP images as rows of bytes, most significant bit
+// first); the transfer operations apply when the list runs. An image the command will reject
+// is not read.
+void save::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  const bool readable = pixels && width >= 0 && height >= 0 && format_type_error(format, type) == GL_NO_ERROR;
+  std::vector<unsigned char> image;
+  if (readable && type == GL_BITMAP) image = copy_bitmap(c.unpack, width, height, pixels);
+  else if (readable) image = copy_image(c.unpack, width, height, format_components(format), pixel_type_size(type), pixels);
+  record::DrawPixels(c, width, height, format, type, readable ? image.data() : nullptr, image.size());
+}
+
+// The source is read whole before anything is drawn, so overlapping rectangles copy what was
+// there (section 4.3.3).
+void exec::CopyPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
+  if (const GLenum e = copy_error(c, width, height, type); e != GL_NO_ERROR) return c.set_error(e);
+  if (!c.raster_pos.valid || width == 0 || height == 0) return;
+  settle_clears(c);
+  PixelImage img;
+  img.width = width, img.height = height;
+  read_source(c, x, y, type, img);
+  draw_image(c, raster_pixel(c.raster_pos.window.x), raster_pixel(c.raster_pos.window.y), img);
+}
+
+}  // namespace shadelab::gl
