@@ -23,10 +23,11 @@ inline GLint color_to_int(double f) {
   return GLint(std::clamp(f, -1.0, 1.0) * 2147483647.0);
 }
 
-/// Other floating-point state as an integer: rounded to the nearest, clamped to GLint.
+/// Other floating-point state as an integer: rounded to the nearest, halves away from zero
+/// (as Mesa's glGetIntegerv: a zoom of -2.5 reads -3), clamped to GLint.
 inline GLint round_to_int(double f) {
   if (!(f == f)) return 0;
-  double r = std::floor(f + 0.5);
+  double r = std::round(f);
   r = std::clamp(r, double(std::numeric_limits<GLint>::min()),
                  double(std::numeric_limits<GLint>::max()));
   return GLint(r);

@@ -64,13 +64,16 @@ const std::vector<float>* find_map(GlContext& c, GLenum map) {
   return &c.pixel.maps.maps[std::size_t(slot)];
 }
 
-template <class T>
-void map_from_integers(GlContext& c, GLenum map, GLsizei size, const T* values, double max) {
+// Colour map entries scaled to [0, 1] by `to_float` (Mesa's conversions: unsigned shorts
+// times the single-precision 1 / 65535, unsigned ints times the double 1 / (2^32 - 1)); index
+// map entries kept as integers.
+template <class T, class ToFloat>
+void map_from_integers(GlContext& c, GLenum map, GLsizei size, const T* values, ToFloat to_float) {
   if (const GLenum e = map_size_error(map, size); e != GL_NO_ERROR) return c.set_error(e);
   if (!values) return;
   std::vector<float> f(static_cast<std::size_t>(size));
   const bool index = is_index_map(map_slot(map));
-  for (GLsizei i = 0; i < size; ++i) f[std::size_t(i)] = index ? float(values[i]) : float(double(values[i]) / max);
+  for (GLsizei i = 0; i < size; ++i) f[std::size_t(i)] = index ? float(values[i]) : to_float(values[i]);
   store_map(c, map, size, f.data());
 }
 
@@ -213,11 +216,11 @@ void exec::PixelMapfv(GlContext& c, GLenum map, GLsizei mapsize, const GLfloat* 
 }
 
 void exec::PixelMapuiv(GlContext& c, GLenum map, GLsizei mapsize, const GLuint* values) {
-  map_from_integers(c, map, mapsize, values, 4294967295.0);
+  map_from_integers(c, map, mapsize, values, [](GLuint v) { return float(v * (1.0 / 4294967295.0)); });
 }
 
 void exec::PixelMapusv(GlContext& c, GLenum map, GLsizei mapsize, const GLushort* values) {
-  map_from_integers(c, map, mapsize, values, 65535.0);
+  map_from_integers(c, map, mapsize, values, [](GLushort v) { return float(v) * (1.0f / 65535.0f); });
 }
 
 void exec::GetPixelMapfv(GlContext& c, GLenum map, GLfloat* values) {
