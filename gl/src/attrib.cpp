@@ -142,6 +142,7 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.color_logic_op = s.color_logic_op;
   d.index_logic_op = s.index_logic_op;
   d.logic_op = s.logic_op;
+  c.buffers.draw_buffer = r.draw_buffer;
 }
 
 // GL_FOG_BIT (table 6.9's fog rows): the enable, mode, density, start, end, index and colour.
@@ -158,9 +159,30 @@ void restore_scissor(GlContext& c, const AttribRecord& r) {
   d.scissor_height = s.scissor_height;
 }
 
-// GL_CURRENT_BIT (table 6.5). The colour material does not follow the popped colour (as in
-// Mesa: the next glColor updates it).
-void restore_current(GlContext& c, const AttribRecord& r) { c.current = r.current; }
+// GL_CURRENT_BIT (table 6.5), the current raster position and its data included. The colour
+// material does not follow the popped colour (as in Mesa: the next glColor updates it).
+void restore_current(GlContext& c, const AttribRecord& r) {
+  c.current = r.current;
+  c.raster_pos = r.raster_pos;
+}
+
+// GL_PIXEL_MODE_BIT (table 6.17 and GL_READ_BUFFER): the transfer modes and the zoom; the
+// pixel maps belong to no group (table 6.18).
+void restore_pixel_mode(GlContext& c, const AttribRecord& r) {
+  PixelTransfer& d = c.pixel;
+  const PixelTransfer& s = r.pixel;
+  d.scale = s.scale;
+  d.bias = s.bias;
+  d.depth_scale = s.depth_scale;
+  d.depth_bias = s.depth_bias;
+  d.index_shift = s.index_shift;
+  d.index_offset = s.index_offset;
+  d.map_color = s.map_color;
+  d.map_stencil = s.map_stencil;
+  d.zoom_x = s.zoom_x;
+  d.zoom_y = s.zoom_y;
+  c.buffers.read_buffer = r.read_buffer;
+}
 
 void restore_depth_buffer(GlContext& c, const AttribRecord& r) {
   c.raster.depth_func = r.raster.depth_func;
@@ -246,6 +268,12 @@ void exec::PushAttrib(GlContext& c, GLbitfield mask) {
   r.hints = c.hints;
   r.matrix_mode = c.matrix_mode;
   r.list_base = c.lists.base;
+  r.raster_pos = c.raster_pos;
+  r.pixel = c.pixel;
+  r.pixel.maps = {};  // restored by no group: not kept
+  r.draw_buffer = c.buffers.draw_buffer;
+  r.read_buffer = c.buffers.read_buffer;
+  r.accum_clear = c.buffers.accum_clear;
   c.attrib_stack.push_back(std::move(r));
 }
 
@@ -255,6 +283,7 @@ void exec::PopAttrib(GlContext& c) {
   const AttribRecord r = std::move(c.attrib_stack.back());
   c.attrib_stack.pop_back();
   const GLbitfield m = r.mask;
+  if (m & GL_ACCUM_BUFFER_BIT) c.buffers.accum_clear = r.accum_clear;
   if (m & GL_COLOR_BUFFER_BIT) restore_color_buffer(c, r);
   if (m & GL_CURRENT_BIT) restore_current(c, r);
   if (m & GL_DEPTH_BUFFER_BIT) restore_depth_buffer(c, r);
@@ -266,6 +295,7 @@ void exec::PopAttrib(GlContext& c) {
   if (m & GL_LIGHTING_BIT) restore_lighting(c, r);
   if (m & GL_LINE_BIT) restore_line(c, r);
   if (m & GL_LIST_BIT) c.lists.base = r.list_base;
+  if (m & GL_PIXEL_MODE_BIT) restore_pixel_mode(c, r);
   if (m & GL_POINT_BIT) restore_point(c, r);
   if (m & GL_POLYGON_BIT) restore_polygon(c, r);
   if (m & GL_POLYGON_STIPPLE_BIT) c.raster.stipple = r.raster.stipple;

@@ -320,6 +320,10 @@ struct AttribRecord {
   std::array<GLenum, 5> hints{};
   GLenum matrix_mode = GL_MODELVIEW;
   GLuint list_base = 0;
+  RasterPosition raster_pos;  // current group (table 6.5)
+  PixelTransfer pixel;        // pixel group (table 6.17): all but the maps, which no group holds
+  GLenum draw_buffer = GL_FRONT, read_buffer = GL_FRONT;  // colour-buffer and pixel groups
+  glm::vec4 accum_clear{0.0f};                             // accum-buffer group
 };
 
 /// One glPushClientAttrib entry (GL 1.1 section 6.1.14).

@@ -4,8 +4,9 @@
  * read back through glGetPixelMap{fv,uiv,usv}), GL_MAX_PIXEL_MAP_TABLE, the accumulation
  * buffer's bits and clear value, GL_DRAW_BUFFER / GL_READ_BUFFER, each through
  * glGetFloatv and glGetIntegerv, and the glGetError code of every call, in contexts with and
- * without an accumulation buffer. The values are written as bytes and compared with Mesa's
- * exactly.
+ * without an accumulation buffer; what glPopAttrib restores of them (the current, pixel,
+ * colour-buffer and accumulation groups, section 6.1.14). The values are written as bytes and
+ * compared with Mesa's exactly.
  *
  * Left out, where Mesa departs from the specification: glGetPixelMapuiv of GL_PIXEL_MAP_I_TO_I
  * (Mesa scales the indices like colours, overflowing) and of GL_PIXEL_MAP_S_TO_S (Mesa returns
@@ -208,6 +209,40 @@ static void buffers(void) {
   E(glBegin(GL_POINTS); glPixelZoom(1.0f, 1.0f); glEnd());
 }
 
+/* Sets every pixel-related attribute to a value of its own (`k` picks the set). */
+static void change_all(int k) {
+  const float f = (float)k;
+  glPixelTransferf(GL_RED_SCALE, 0.5f + f);
+  glPixelTransferf(GL_GREEN_BIAS, 0.25f * f);
+  glPixelTransferf(GL_DEPTH_SCALE, 2.0f - f);
+  glPixelTransferi(GL_INDEX_SHIFT, 1 + k);
+  glPixelTransferi(GL_INDEX_OFFSET, -2 * k);
+  glPixelTransferi(GL_MAP_COLOR, k % 2);
+  glPixelTransferi(GL_MAP_STENCIL, (k + 1) % 2);
+  glPixelZoom(1.5f + f, -0.5f * f);
+  const GLfloat map[2] = {0.25f * f, 0.75f};
+  glPixelMapfv(GL_PIXEL_MAP_R_TO_R, k + 1, map);
+  glDrawBuffer(k % 2 ? GL_NONE : GL_BACK);
+  glReadBuffer(k % 2 ? GL_BACK : GL_FRONT);
+  glClearAccum(0.1f * f, -0.2f, 0.3f, f);
+  glColor4f(0.1f * f, 0.2f, 0.3f, 0.4f);
+  glRasterPos3f(5.0f + f, 7.0f, 0.25f * f);
+}
+
+/* glPushAttrib of each group that holds pixel state, and of all, then glPopAttrib: what comes
+ * back and what stays (the pixel maps belong to no group). */
+static void attrib_groups(void) {
+  static const GLbitfield masks[] = {GL_ALL_ATTRIB_BITS, GL_PIXEL_MODE_BIT, GL_CURRENT_BIT, GL_COLOR_BUFFER_BIT,
+                                     GL_ACCUM_BUFFER_BIT, GL_ENABLE_BIT};
+  for (unsigned i = 0; i < sizeof masks / sizeof masks[0]; ++i) {
+    change_all(0);
+    E(glPushAttrib(masks[i]));
+    change_all(1);
+    E(glPopAttrib());
+    all_state();
+  }
+}
+
 /* One context's worth: a 64 x 64 RGBA buffer with `accum_bits` accumulation bits. */
 static int run(int accum_bits) {
   OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, accum_bits, NULL);
@@ -219,6 +254,12 @@ static int run(int accum_bits) {
   transfer_zoom_store();
   buffers();
   all_state();
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, 64, 0, 64, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  attrib_groups();
   OSMesaDestroyContext(ctx);
   free(buffer);
   return 1;
