@@ -18,6 +18,7 @@ int conf_init_accum(ConfContext* c, int argc, char** argv, int width, int height
   c->width = width;
   c->height = height;
   c->out_path = argc > 1 ? argv[1] : NULL;
+  c->values = NULL;
   if (!c->out_path) {
     fprintf(stderr, "usage: %s OUTPUT.png\n", argc > 0 ? argv[0] : "program");
     return 0;
@@ -107,7 +108,29 @@ int conf_finish(ConfContext* c) {
   }
   OSMesaDestroyContext(c->ctx);
   free(c->buffer);
+  if (c->values && fclose(c->values) != 0) rc = 2;
   return rc;
+}
+
+void conf_value(ConfContext* c, const char* name, double value) {
+  if (!c->values) c->values = conf_open_values(c);
+  if (c->values) fprintf(c->values, "%s: %.9g\n", name, value);
+}
+
+void conf_values(ConfContext* c, const char* name, const double* values, int n) {
+  char key[256];
+  for (int i = 0; i < n; ++i) {
+    snprintf(key, sizeof key, "%s[%d]", name, i);
+    conf_value(c, key, values[i]);
+  }
+}
+
+void conf_error(ConfContext* c, const char* name) {
+  char key[256];
+  snprintf(key, sizeof key, "error %s", name);
+  conf_value(c, key, (double)glGetError());
+  while (glGetError() != GL_NO_ERROR) {
+  }
 }
 
 void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows) {

@@ -21,6 +21,7 @@ typedef struct ConfContext {
   int width;
   int height;
   const char* out_path;
+  FILE* values; /* conf_value's file (conf_open_values), opened at its first record */
 } ConfContext;
 
 /* Creates an RGBA context (24-bit depth, 8-bit stencil) on a width x height buffer and makes
@@ -56,6 +57,16 @@ int conf_write_bytes_png(const char* path, const unsigned char* bytes, long n, i
 
 /* Reports an unexpected GL error (and where) on stderr; returns 1 if there was one. */
 int conf_check_error(const char* where);
+
+/* Records a named value (a query's answer, a glGetError code, a texel read back) as a line
+ * "name: value" (%.9g) of the values file (conf_open_values, opened at the first record and
+ * closed by conf_finish), for programs in GL_CONFORMANCE_VALUE_PROGRAMS: state and errors are
+ * compared with Mesa's value by value by gl_values, not through pixels. */
+void conf_value(ConfContext* c, const char* name, double value);
+/* conf_value of "name[i]" for each of n values. */
+void conf_values(ConfContext* c, const char* name, const double* values, int n);
+/* Records glGetError() as "error name", then clears any further error. */
+void conf_error(ConfContext* c, const char* name);
 
 /* Shapes, all with per-vertex normals, drawn with glBegin(GL_TRIANGLES) (so that lighting tests
  * do not depend on how an implementation splits quads). */
