@@ -72,6 +72,12 @@ class Input {
         GL_CURRENT_RASTER_POSITION_VALID, GL_ACCUM_RED_BITS, GL_ACCUM_CLEAR_VALUE, GL_DRAW_BUFFER,
         GL_NONE, GL_LEFT, GL_RIGHT, GL_AUX0, GL_FRONT_LEFT, GL_BACK_RIGHT, GL_ACCUM, GL_LOAD,
         GL_RETURN, GL_MULT, GL_ADD,
+        // Textures: targets, texture generation, internal formats, level parameters.
+        GL_TEXTURE_1D, GL_PROXY_TEXTURE_1D, GL_PROXY_TEXTURE_2D, GL_S, GL_T, GL_R, GL_Q,
+        GL_TEXTURE_GEN_MODE, GL_OBJECT_LINEAR, GL_EYE_LINEAR, GL_SPHERE_MAP, GL_OBJECT_PLANE,
+        GL_EYE_PLANE, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q, GL_INTENSITY, GL_RGB5_A1, GL_RGBA16,
+        GL_R3_G3_B2, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_WIDTH, GL_TEXTURE_BORDER,
+        GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -147,7 +153,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 59) {
+    switch (in.byte() % 64) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -279,6 +285,47 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (in.byte() % 2) glPolygonStipple(b->pixels);
         else glGetPolygonStipple(b->pixels);
         break;
+      case 59:  // 1D images and sub-images, any target
+        glBindTexture(in.any_enum(), in.byte() % 4);
+        glTexImage1D(in.any_enum(), in.small(-1, 4), GLint(in.any_enum()), in.small(-1, kMaxImage + 2),
+                     in.small(-1, 1), in.any_enum(), in.any_enum(), in.byte() % 8 ? b->pixels : nullptr);
+        glTexSubImage1D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-1, kMaxImage),
+                        in.any_enum(), in.any_enum(), b->pixels);
+        break;
+      case 60:
+        glTexSubImage2D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-2, kMaxImage),
+                        in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.any_enum(), in.any_enum(), b->pixels);
+        break;
+      case 61:  // copies from the framebuffer, inside it or not
+        glCopyTexImage2D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-20, kSize), in.small(-20, kSize),
+                         in.small(-1, kMaxImage + 2), in.small(-1, kMaxImage + 2), in.small(-1, 1));
+        glCopyTexSubImage2D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-2, kMaxImage),
+                            in.small(-20, kSize), in.small(-20, kSize), in.small(-1, kMaxImage), in.small(-1, kMaxImage));
+        glCopyTexImage1D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-20, kSize), in.small(-20, kSize),
+                         in.small(-1, kMaxImage + 2), in.small(-1, 1));
+        glCopyTexSubImage1D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-20, kSize),
+                            in.small(-20, kSize), in.small(-1, kMaxImage));
+        break;
+      case 62: {  // queries into our buffers (levels are at most kMaxImage on a side)
+        glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
+        glGetTexImage(in.any_enum(), in.small(-1, 4), in.any_enum(), in.any_enum(), b->pixels);
+        glGetTexLevelParameteriv(in.any_enum(), in.small(-1, 15), in.any_enum(), reinterpret_cast<GLint*>(b->out));
+        glGetTexLevelParameterfv(in.any_enum(), in.small(-1, 15), in.any_enum(), reinterpret_cast<GLfloat*>(b->out));
+        GLuint names[4] = {in.byte(), in.byte(), 0, 1};
+        const GLclampf priorities[4] = {in.number(), in.number(), in.number(), in.number()};
+        GLboolean resident[4];
+        glPrioritizeTextures(in.small(-1, 4), names, priorities);
+        (void)glAreTexturesResident(in.small(-1, 4), names, resident);
+        break;
+      }
+      case 63: {  // texture coordinate generation
+        for (int i = 0; i < 4; ++i) f[i] = in.number();
+        glTexGenfv(in.any_enum(), in.any_enum(), f);
+        glTexGeni(in.any_enum(), in.any_enum(), GLint(in.any_enum()));
+        glGetTexGenfv(in.any_enum(), in.any_enum(), reinterpret_cast<GLfloat*>(b->out));
+        glTexCoordPointer(4, GL_FLOAT, 0, b->arrays[3]);
+        break;
+      }
       case 39: {
         glFinish();
         GLint w, h, bytes;

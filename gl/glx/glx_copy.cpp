@@ -28,7 +28,8 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
     for (std::size_t i = 0; i < s.lighting.lights.size(); ++i) d.lighting.lights[i].enabled = s.lighting.lights[i].enabled;
     b.depth_test = a.depth_test, b.blend = a.blend, b.cull = a.cull, b.stencil_test = a.stencil_test;
     b.polygon_offset_fill = a.polygon_offset_fill, b.dither = a.dither;
-    d.textures.enabled_2d = s.textures.enabled_2d;
+    d.textures.enabled_1d = s.textures.enabled_1d, d.textures.enabled_2d = s.textures.enabled_2d;
+    for (std::size_t i = 0; i < 4; ++i) d.textures.gen[i].enabled = s.textures.gen[i].enabled;
     d.inert = s.inert;
   }
   if (mask & GL_COLOR_BUFFER_BIT) {
@@ -51,10 +52,16 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
   }
   if (mask & GL_HINT_BIT) d.hints = s.hints;
   if (mask & GL_TEXTURE_BIT) {
-    d.textures.enabled_2d = s.textures.enabled_2d;
+    d.textures.enabled_1d = s.textures.enabled_1d, d.textures.enabled_2d = s.textures.enabled_2d;
     d.textures.env_mode = s.textures.env_mode, d.textures.env_color = s.textures.env_color;
+    d.textures.gen = s.textures.gen;
     if (d.textures.names == s.textures.names) {  // a binding means something only within a share group
-      d.textures.bound_name = s.textures.bound_name, d.textures.bound = s.textures.bound;
+      for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D}) {
+        const TextureBinding& from = s.textures.binding(target);
+        TextureBinding& to = d.textures.binding(target);
+        to.name = from.name;
+        to.object = from.name ? from.object : to.default_object;
+      }
     }
   }
 }

@@ -119,6 +119,13 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
   }
   c.textures.env_mode = r.textures.env_mode;
   c.textures.env_color = r.textures.env_color;
+  // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
+  // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
+  for (std::size_t i = 0; i < c.textures.gen.size(); ++i) {
+    c.textures.gen[i].mode = r.textures.gen[i].mode;
+    c.textures.gen[i].object_plane = r.textures.gen[i].object_plane;
+    c.textures.gen[i].eye_plane = r.textures.gen[i].eye_plane;
+  }
   restore_enables(c, r, [](GLenum cap) {
     return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
   });

@@ -14,10 +14,19 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
     lighting.lights[std::size_t(i)].enabled = false;  // every GL_LIGHTi starts disabled
   }
   // GL's default back material equals the front one; both are Material's defaults.
-  textures.default_texture = std::make_shared<TextureObject>();
-  textures.bound = textures.default_texture;
+  // Each target's default texture (name 0), with the target's dimensions.
+  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D}) {
+    TextureBinding& b = textures.binding(target);
+    b.default_object = std::make_shared<TextureObject>();
+    b.default_object->target = target;
+    b.default_object->texture.dimensions = target == GL_TEXTURE_1D ? 1 : 2;
+    b.object = b.default_object;
+  }
   textures.names = share ? share->textures.names : std::make_shared<TextureNames>();
   lists.names = share ? share->lists.names : std::make_shared<ListNames>();
+  // glTexGen's initial planes: s = x, t = y, r = q = 0 (GL 1.1 section 2.10.4).
+  textures.gen[0].object_plane = textures.gen[0].eye_plane = glm::vec4(1, 0, 0, 0);
+  textures.gen[1].object_plane = textures.gen[1].eye_plane = glm::vec4(0, 1, 0, 0);
   const char* reference = std::getenv("SHADELAB_REFERENCE");
   use_reference = reference && *reference && std::string_view(reference) != "0";
 }

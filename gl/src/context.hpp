@@ -24,6 +24,7 @@
 #include "gl/src/dlist_state.hpp"
 #include "gl/src/pixel_state.hpp"
 #include "gl/src/primitive.hpp"
+#include "gl/src/texformat.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
 #include "shadelab/material.hpp"
@@ -38,7 +39,8 @@ inline constexpr int kMaxLights = 32;
 inline constexpr int kMaxModelviewDepth = 32;
 inline constexpr int kMaxProjectionDepth = 32;
 inline constexpr int kMaxTextureStackDepth = 10;
-inline constexpr int kMaxTextureSize = 8192;
+inline constexpr int kMaxTextureSize = 16384;  // as llvmpipe's
+inline constexpr int kMaxTextureLevels = 15;    // levels 0 .. log2(kMaxTextureSize)
 inline constexpr int kMaxViewportDim = 16384;
 inline constexpr int kMaxBufferDim = 16384;  // OSMESA_MAX_WIDTH / OSMESA_MAX_HEIGHT
 
@@ -142,27 +144,61 @@ struct InertCaps {
   bool polygon_smooth = false;  // llvmpipe draws polygons unsmoothed whatever it says
 };
 
+/// One level of a texture as glTexImage specified it (GL 1.1 section 3.8, table 6.16): what
+/// glGetTexLevelParameter reports and, for formats of more than 8 bits a component, the stored
+/// components (the core's RGBA8 level holds the rest: gl/src/texformat.hpp).
+struct TexImage {
+  bool defined = false;  // specified by glTexImage or glCopyTexImage (a proxy: accepted)
+  int width = 0, height = 0, border = 0;
+  GLint internal_format = GL_RGBA;  // as given; Mesa reports GL_RGBA for an undefined image
+  StoredFormat format;
+  std::vector<std::uint16_t> wide;  // format.components per texel when format.wide()
+};
+
+/// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
+/// levels and parameters in the core's form (what the pipeline samples), and what GL reports.
 struct TextureObject {
+  GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once bound; 0 before
   Texture texture;
-  std::vector<GLint> internal_formats;  // per level, as given to glTexImage2D
-  glm::vec4 border_color{0.0f};         // stored; the core samples a black border
+  std::vector<TexImage> images;  // per level
   float priority = 1.0f;
 };
 
-/// Texture objects by name; shared between contexts created with a sharelist.
+/// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
+/// makes the objects (as Mesa does), without a target until their first binding.
 struct TextureNames {
   std::unordered_map<GLuint, std::shared_ptr<TextureObject>> objects;
   GLuint next_name = 1;
 };
 
+/// A texture target's binding: the named object bound, or the target's default object (name 0).
+struct TextureBinding {
+  GLuint name = 0;
+  std::shared_ptr<TextureObject> object;
+  std::shared_ptr<TextureObject> default_object;
+};
+
+/// glTexGen state of one coordinate (GL 1.1 section 2.10.4). The eye plane is stored as given
+/// times the inverse of the modelview matrix at the call.
+struct TexGenCoord {
+  bool enabled = false;  // GL_TEXTURE_GEN_S .. Q
+  GLenum mode = GL_EYE_LINEAR;
+  glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
+};
+
 struct TextureState {
-  bool enabled_2d = false;     // GL_TEXTURE_2D
-  GLuint bound_name = 0;
-  std::shared_ptr<TextureObject> bound;  // the default texture when bound_name is 0
-  std::shared_ptr<TextureObject> default_texture;
+  bool enabled_1d = false, enabled_2d = false;  // GL_TEXTURE_1D, GL_TEXTURE_2D
+  TextureBinding binding_1d, binding_2d;
+  // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
+  std::vector<TexImage> proxy_1d, proxy_2d;
   std::shared_ptr<TextureNames> names;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
+  std::array<TexGenCoord, 4> gen;  // s, t, r, q
+
+  TextureBinding& binding(GLenum target) { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
+  const TextureBinding& binding(GLenum target) const { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
+  bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
 };
 
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
@@ -185,12 +221,11 @@ struct ClientArrays {
   ClientArray edge_flag{false, 1, GL_UNSIGNED_BYTE};  // GLboolean elements
 };
 
-/// One vertex of a primitive being specified: its eye-space position, normal and texture
-/// coordinates (lighting state cannot change between glBegin and glEnd).
+/// One vertex of a primitive being specified: its eye-space position and normal (lighting
+/// state cannot change between glBegin and glEnd).
 struct PrimitiveVertex {
   glm::vec4 eye;
   glm::vec3 normal{0.0f};  // eye space, or as given while Primitive::object_normals
-  glm::vec2 texcoord;
 };
 
 /// A vertex's colours, lit as it arrived (or the current colour, unlit).
@@ -207,6 +242,9 @@ struct Primitive {
   // The vertices' colours, one per vertex, unless lighting is deferred (then empty): records
   // of a lit primitive are less than half as large, to write in glVertex and read in glEnd.
   std::vector<VertexColors> colors;
+  // The vertices' texture coordinates (s, t, r, q) after generation and the texture matrix,
+  // one per vertex while `textured` (else empty); q divides per fragment.
+  std::vector<glm::vec4> texcoords;
   bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
   // Begun by a display list being executed: llvmpipe then splits quads from their second
   // vertex (docs/gl-conformance.md).
@@ -238,7 +276,7 @@ struct Primitive {
 struct ArrayScratch {
   detail::ScratchVector<glm::vec4> positions, colors;
   detail::ScratchVector<glm::vec3> normals;
-  detail::ScratchVector<glm::vec2> texcoords;
+  detail::ScratchVector<glm::vec4> texcoords;      // (s, t, r, q) after the texture matrix
   detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
   detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
   detail::ScratchVector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
@@ -253,7 +291,7 @@ struct ImmediateScratch {
   // Every element is written after each resize (Batch::set): growing costs no zeroing.
   detail::ScratchVector<glm::vec4> positions, colors, back_colors;
   detail::ScratchVector<glm::vec3> normals, secondary, back_secondary;
-  detail::ScratchVector<glm::vec2> texcoords;
+  detail::ScratchVector<glm::vec4> texcoords;
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
   std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite

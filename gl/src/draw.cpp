@@ -17,6 +17,8 @@
 
 #include "gl/src/convert.hpp"
 #include "gl/src/primitive.hpp"
+#include "gl/src/texgen.hpp"
+#include "gl/src/texture.hpp"
 #include "shadelab/lighting.hpp"
 
 #if defined(__SSE2__)
@@ -128,15 +130,6 @@ TextureEnvMode env_mode(GLenum mode) {
   }
 }
 
-// The texture to apply, or nullptr (GL_TEXTURE_2D off, or an incomplete texture, which GL
-// 1.1 section 3.8.9 treats as texturing disabled).
-const Texture* active_texture(GlContext& c) {
-  TextureState& t = c.textures;
-  if (!t.enabled_2d || !t.bound || !t.bound->texture.complete()) return nullptr;
-  t.bound->texture.env_color = t.env_color;  // GL_TEXTURE_ENV_COLOR is context state
-  return &t.bound->texture;
-}
-
 // m * v with glm's operations in glm's order, (m0 x + m1 y) + (m2 z + m3 w), so the same
 // floats; in one SSE register where the target has one. glm's operator*, called from the
 // per-vertex loops, was not inlined: its result went through memory in two halves and was
@@ -186,14 +179,21 @@ void light_vertex(const GlContext& c, const PrimitiveVertex& v, VertexColors& ou
   out.back_secondary = sanitize(b.secondary);
 }
 
-// (s, t) after the texture matrix; q divides per vertex (not per fragment, see docs/gl.md).
-glm::vec2 texcoord(const GlContext& c, glm::vec4 tc) {
+// (s, t, r, q) after the texture matrix; the pipeline divides by q per fragment.
+glm::vec4 texcoord(const GlContext& c, glm::vec4 tc) {
   if (!c.prim.identity_texture_matrix) tc = c.prim.texture_matrix * tc;
-  glm::vec2 st(tc);
-  if (tc.w != 1.0f && tc.w != 0.0f) st /= tc.w;
-  // Keep texel indices far from integer overflow in the sampler.
-  for (int i = 0; i < 2; ++i) st[i] = std::clamp(finite_or_zero(st[i]), -1e6f, 1e6f);
-  return st;
+  return tc;
+}
+
+// A vertex's texture coordinates before the texture matrix: `given`, or generated where
+// glTexGen is enabled (GL 1.1 section 2.10.4) from its object and eye positions and its
+// object-space `normal` (transformed here when a sphere map reads it).
+glm::vec4 source_texcoord(const GlContext& c, const glm::vec4& given, const glm::vec4& object, const glm::vec4& eye,
+                          const glm::vec3& normal) {
+  const TextureState& t = c.textures;
+  if (!t.any_texgen()) return given;
+  const glm::vec3 n = texgen_needs_normal(t) ? eye_normal(c, normal) : glm::vec3(0.0f);
+  return generate_texcoords(t, given, object, eye, n);
 }
 
 // Arrays for one draw_triangles call, in the context's reused buffers: one entry per vertex
@@ -210,7 +210,8 @@ struct Batch {
 
   // Only what the draw reads: normals when the pipeline lights, colours when lit here (or
   // unlit), texture coordinates when textured.
-  void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors, bool texcoords) {
+  void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors,
+           const glm::vec4* texcoord) {
     s.positions[i] = v.eye;
     if (normals) s.normals[i] = v.normal;
     if (colors) {
@@ -219,17 +220,17 @@ struct Batch {
       s.secondary[i] = colors->front_secondary;
       s.back_secondary[i] = colors->back_secondary;
     }
-    if (texcoords) s.texcoords[i] = v.texcoord;
+    if (texcoord) s.texcoords[i] = *texcoord;
   }
 
-  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors) {
+  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors, const glm::vec4& texcoord) {
     s.positions.push_back(v.eye);
     s.normals.push_back(v.normal);
     s.colors.push_back(colors.front);
     s.back_colors.push_back(colors.back);
     s.secondary.push_back(colors.front_secondary);
     s.back_secondary.push_back(colors.back_secondary);
-    s.texcoords.push_back(v.texcoord);
+    s.texcoords.push_back(texcoord);
     return std::uint32_t(s.positions.size() - 1);
   }
 };
@@ -244,7 +245,8 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch&
   if (v[1] == t.provoking) return {v[2], v[0], v[1]};
   if (v[2] == t.provoking) return {v[0], v[1], v[2]};
   const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
-  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors)};
+  const glm::vec4 texcoord = prim.texcoords.empty() ? glm::vec4(0, 0, 0, 1) : prim.texcoords[v[2]];
+  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord)};
 }
 
 // Marks the window-space bounds of the batch's vertices (the whole viewport when a vertex
@@ -324,7 +326,7 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
     const PrimitiveVertex& v = p.vertices[i];
-    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured);
+    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured ? &p.texcoords[i] : nullptr);
     if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
@@ -393,6 +395,7 @@ void flush_part(GlContext& c) {
   if (p.mode == GL_TRIANGLE_STRIP && ((f.drawable - 2) & 1u)) p.odd_strip_start = !p.odd_strip_start;
   keep_ends(p.vertices, f.keep_first, f.keep_last);
   keep_ends(p.colors, f.keep_first, f.keep_last);
+  keep_ends(p.texcoords, f.keep_first, f.keep_last);
 }
 
 // Rotates a triangle so that its provoking vertex comes last (the core's flat convention);
@@ -460,6 +463,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
     for (std::size_t v = begin; v < end; ++v) {
       glm::vec4 eye = transform(p.modelview, m.positions[v]);
       if (eye.w != 1.0f) homogeneous = true;
+      if (texture) m.raw_texcoords[v] = source_texcoord(c, m.raw_texcoords[v], m.positions[v], eye, m.normals[v]);
       m.positions[v] = eye;
       m.finite[v] = finite_clip(projection, small_projection, eye);
       if (!m.finite[v]) nonfinite = true;
@@ -555,6 +559,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.mode = mode;
   p.vertices.clear();
   p.colors.clear();
+  p.texcoords.clear();
   p.odd_strip_start = false;
   p.in_list = c.lists.depth > 0;
   p.from_elements = false;
@@ -600,7 +605,9 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   // than it was written, a store-forwarding stall per vertex (half of this function's time).
   PrimitiveVertex& v = p.vertices.emplace_back();
   v.eye = eye;
-  v.texcoord = p.textured ? texcoord(c, c.current.texcoord) : glm::vec2(0.0f);
+  if (p.textured) {
+    p.texcoords.push_back(texcoord(c, source_texcoord(c, c.current.texcoord, object_position, eye, c.current.normal)));
+  }
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v, p.colors.emplace_back());
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
@@ -611,6 +618,7 @@ void end_primitive(GlContext& c) {
   if (p.vertices.size() >= 3) draw_vertices(c, std::uint32_t(p.vertices.size()));
   p.vertices.clear();
   p.colors.clear();
+  p.texcoords.clear();
   p.active = false;
 }
 

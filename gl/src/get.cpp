@@ -157,7 +157,8 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_END: out = make(Kind::kFloat, {c.fog.end}); return true;
     case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
     case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
-    case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.bound_name)}); return true;
+    case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
+    case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
     case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;

@@ -1,6 +1,9 @@
 // Client pixel memory (GL 1.1 sections 3.6.3, 4.3.2): its layout under glPixelStore, and the
-// conversion of its elements to and from floats (table 2.6). No GL state, no framebuffer.
+// conversion of its elements to and from floats (table 2.6). No GL state but the pixel
+// transfer state unpack_rgba_image is given (texture images), no framebuffer.
 #include "gl/src/pixels.hpp"
+
+#include "gl/src/pixel_transfer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -93,11 +96,11 @@ std::vector<unsigned char> copy_image(const PixelStore& unpack, int width, int h
 float read_component(const unsigned char* p, GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE: return float(load<GLubyte>(p) / 255.0);
-    case GL_BYTE: return float((2.0 * load<GLbyte>(p) + 1.0) / 255.0);
+    case GL_BYTE: return float(std::max(-1.0, load<GLbyte>(p) / 127.0));
     case GL_UNSIGNED_SHORT: return float(load<GLushort>(p) / 65535.0);
-    case GL_SHORT: return float((2.0 * load<GLshort>(p) + 1.0) / 65535.0);
+    case GL_SHORT: return float(std::max(-1.0, load<GLshort>(p) / 32767.0));
     case GL_UNSIGNED_INT: return float(load<GLuint>(p) / 4294967295.0);
-    case GL_INT: return float((2.0 * load<GLint>(p) + 1.0) / 4294967295.0);
+    case GL_INT: return float(std::max(-1.0, load<GLint>(p) / 2147483647.0));
     case GL_FLOAT: return load<GLfloat>(p);
     default: return 0.0f;
   }
@@ -116,9 +119,14 @@ void write_component(unsigned char* p, GLenum type, float v) {
   }
 }
 
-void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4]) {
-  int size = pixel_type_size(type);
-  auto c = [&](int i) { return read_component(p + i * size, type); };
+void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4], bool swap_bytes) {
+  const int size = pixel_type_size(type);
+  auto c = [&](int i) {
+    if (!swap_bytes || size == 1) return read_component(p + i * size, type);
+    unsigned char b[4] = {0, 0, 0, 0};
+    for (int k = 0; k < size; ++k) b[k] = p[i * size + size - 1 - k];
+    return read_component(b, type);
+  };
   rgba[0] = rgba[1] = rgba[2] = 0.0f;
   rgba[3] = 1.0f;
   switch (format) {
@@ -150,6 +158,61 @@ GLenum format_type_error(GLenum format, GLenum type) {
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   }
   return pixel_type_size(type) > 0 ? GL_NO_ERROR : GL_INVALID_ENUM;
+}
+
+namespace {
+
+// A colour index of `type` at `p` (GL 1.1 section 3.6.3: integers as they are, floats too).
+double read_index(const unsigned char* p, GLenum type, bool swap_bytes) {
+  unsigned char b[4] = {0, 0, 0, 0};
+  const int size = pixel_type_size(type);
+  for (int k = 0; k < size; ++k) b[k] = p[swap_bytes ? size - 1 - k : k];
+  switch (type) {
+    case GL_UNSIGNED_BYTE: return load<GLubyte>(b);
+    case GL_BYTE: return load<GLbyte>(b);
+    case GL_UNSIGNED_SHORT: return load<GLushort>(b);
+    case GL_SHORT: return load<GLshort>(b);
+    case GL_UNSIGNED_INT: return load<GLuint>(b);
+    case GL_INT: return load<GLint>(b);
+    case GL_FLOAT: return load<GLfloat>(b);
+    default: return 0.0;
+  }
+}
+
+// Bit x of row y of a GL_BITMAP image (GL 1.1 section 3.6.3: rows of whole bytes padded to
+// the alignment, skip pixels counted in bits, the most significant bit first unless
+// GL_UNPACK_LSB_FIRST).
+int bitmap_bit(const PixelStore& s, const unsigned char* p, int row_pixels, int x, int y) {
+  const std::size_t row_bits = std::size_t(s.row_length > 0 ? s.row_length : row_pixels);
+  const std::size_t align = std::size_t(s.alignment);
+  const std::size_t row_bytes = ((row_bits + 7) / 8 + align - 1) / align * align;
+  const std::size_t bit = std::size_t(s.skip_pixels) + std::size_t(x);
+  const unsigned char byte = p[std::size_t(s.skip_rows + y) * row_bytes + bit / 8];
+  return (byte >> (s.lsb_first ? bit % 8 : 7 - bit % 8)) & 1;
+}
+
+}  // namespace
+
+void unpack_rgba_image(const GlContext& c, const PixelStore& store, int row_pixels, int x0, int y0, int width,
+                       int height, GLenum format, GLenum type, const void* pixels, float* out) {
+  const auto* in = static_cast<const unsigned char*>(pixels);
+  const bool index = format == GL_COLOR_INDEX;
+  const PixelLayout layout =
+      type == GL_BITMAP ? PixelLayout{} : pixel_layout(store, index ? 1 : color_format_components(format), pixel_type_size(type), row_pixels);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x, out += 4) {
+      glm::vec4 rgba;
+      if (type == GL_BITMAP || index) {
+        const double i = type == GL_BITMAP ? bitmap_bit(store, in, row_pixels, x0 + x, y0 + y)
+                                           : read_index(in + layout.offset(x0 + x, y0 + y), type, store.swap_bytes);
+        rgba = index_to_rgba(c.pixel, shift_index(c.pixel, std::int64_t(i)));
+      } else {
+        unpack_rgba(in + layout.offset(x0 + x, y0 + y), format, type, &rgba[0], store.swap_bytes);
+        rgba = transfer_color(c.pixel, rgba);
+      }
+      for (int k = 0; k < 4; ++k) out[k] = std::clamp(rgba[k], 0.0f, 1.0f);
+    }
+  }
 }
 
 namespace {

@@ -51,7 +51,8 @@ struct BitmapLayout {
 BitmapLayout bitmap_layout(const PixelStore& store, int width);
 
 /// Component of `type` at `p` as a float: unsigned integers map to [0, 1], signed ones to
-/// [-1, 1], floats are kept.
+/// [-1, 1] as Mesa converts them (c / (2^(b-1) - 1), at least -1: the rule of later GL
+/// versions; GL 1.1's table 2.6 has (2c + 1) / (2^b - 1)), floats are kept.
 float read_component(const unsigned char* p, GLenum type);
 
 /// Writes `v` as a component of `type` (integers from [0, 1] or [-1, 1], rounded).
@@ -70,8 +71,18 @@ std::vector<unsigned char> copy_image(const PixelStore& unpack, int width, int h
 /// glDrawPixels of GL_BITMAP, glPolygonStipple), replayed with DefaultUnpack.
 std::vector<unsigned char> copy_bitmap(const PixelStore& unpack, int width, int height, const void* pixels);
 
-/// An unpacked colour pixel of `format` as RGBA (missing colour components 0, alpha 1).
-void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4]);
+/// An unpacked colour pixel of `format` as RGBA (missing colour components 0, alpha 1), its
+/// components' bytes swapped first when `swap_bytes` (GL_UNPACK_SWAP_BYTES).
+void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4], bool swap_bytes = false);
+
+/// The RGBA of a width x height window whose first pixel is (x0, y0) of a client image of
+/// `format` (a colour format or GL_COLOR_INDEX) and `type` (GL_BITMAP with GL_COLOR_INDEX
+/// too), laid out by `store` with rows of `row_pixels` pixels (when store.row_length is 0):
+/// width * height * 4 floats, row by row, into `out`, through the pixel transfer operations
+/// as glDrawPixels applies them (GL 1.1 section 3.8.1: transfer_color, or shift_index and
+/// index_to_rgba for indices; clamped to [0, 1]).
+void unpack_rgba_image(const GlContext& c, const PixelStore& store, int row_pixels, int x0, int y0, int width,
+                       int height, GLenum format, GLenum type, const void* pixels, float* out);
 
 /// Elements per pixel of any GL 1.1 pixel format (GL_COLOR_INDEX, GL_STENCIL_INDEX and
 /// GL_DEPTH_COMPONENT have one; the colour formats as color_format_components); 0 for others.

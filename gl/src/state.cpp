@@ -8,8 +8,8 @@
 namespace shadelab::gl {
 
 // The flag behind an enable capability, or nullptr for one shadelab does not accept.
-// Capabilities that change images shadelab cannot draw yet (clip planes, texture generation,
-// 1D textures) are rejected with GL_INVALID_ENUM.
+// Capabilities that change images shadelab cannot draw yet (clip planes) are rejected with
+// GL_INVALID_ENUM.
 bool* capability_flag(GlContext& c, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return &c.lighting.lights[cap - GL_LIGHT0].enabled;
   switch (cap) {
@@ -29,7 +29,12 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_INDEX_LOGIC_OP: return &c.raster.index_logic_op;  // = GL 1.0's GL_LOGIC_OP
     case GL_POLYGON_STIPPLE: return &c.raster.polygon_stipple;
     case GL_FOG: return &c.fog.enabled;
+    case GL_TEXTURE_1D: return &c.textures.enabled_1d;
     case GL_TEXTURE_2D: return &c.textures.enabled_2d;
+    case GL_TEXTURE_GEN_S: return &c.textures.gen[0].enabled;
+    case GL_TEXTURE_GEN_T: return &c.textures.gen[1].enabled;
+    case GL_TEXTURE_GEN_R: return &c.textures.gen[2].enabled;
+    case GL_TEXTURE_GEN_Q: return &c.textures.gen[3].enabled;
     case GL_POINT_SMOOTH: return &c.inert.point_smooth;
     case GL_LINE_SMOOTH: return &c.inert.line_smooth;
     case GL_LINE_STIPPLE: return &c.inert.line_stipple;

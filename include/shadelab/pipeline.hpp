@@ -345,7 +345,10 @@ struct VertexInput {
   std::span<const glm::vec4> back_colors;
   std::span<const glm::vec3> secondary_colors;
   std::span<const glm::vec3> back_secondary_colors;
-  std::span<const glm::vec2> texcoords;  ///< (s, t) per vertex, for texturing
+  /// (s, t, r, q) per vertex, for texturing: s / q and t / q index the texture, divided per
+  /// fragment (GL 1.1 section 3.8), so that projected texture coordinates interpolate as GL
+  /// says.
+  std::span<const glm::vec4> texcoords;
   /// Fog coordinate per vertex (eye-space distance); empty: |z| of `positions`.
   std::span<const float> fog_coords;
   glm::vec4 constant_color{1.0f};
@@ -491,7 +494,8 @@ struct FragmentRect {
   float depth = 0.0f;                ///< window depth of every fragment (the raster position's)
   std::span<const float> depths;     ///< or one per fragment (glDrawPixels of depth values)
   std::span<const std::uint8_t> mask;  ///< empty, or width * height: 0 makes no fragment (glBitmap)
-  glm::vec2 texcoord{0.0f};  ///< (s, t) of every fragment (the raster position's), for texturing
+  /// (s, t, r, q) of every fragment (the raster position's), for texturing (s / q, t / q).
+  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
   float fog_coord = 0.0f;    ///< the raster position's fog coordinate
 };
 

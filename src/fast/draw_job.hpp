@@ -63,7 +63,7 @@ struct VaryingLayout {
   int front_color = -1, back_color = -1;          // 4 floats
   int front_secondary = -1, back_secondary = -1;  // 3 floats
   int eye_position = -1, eye_normal = -1;         // 3 floats
-  int texcoord = -1;                              // 2 floats
+  int texcoord = -1;                              // 4 floats: s, t, r, q
   int fog = -1;                                   // 1 float: the fog coordinate
   int count = 0;                                  // floats per vertex
 };

@@ -124,7 +124,7 @@ void make_plan(DrawJob& job) {
     l.eye_position = take(l, 3);
     l.eye_normal = take(l, 3);
   }
-  if (shade.texture) l.texcoord = take(l, 2);
+  if (shade.texture) l.texcoord = take(l, 4);
   if (p.fog) l.fog = take(l, 1);
   p.layout = l;
   if (shade.lighting) {
@@ -140,7 +140,7 @@ void expand_varyings(const VaryingLayout& l, const float* v, detail::Attribs& a)
   if (l.back_secondary >= 0) copy_slot(v + l.back_secondary, &a[detail::kBackSecondary], 3);
   if (l.eye_position >= 0) copy_slot(v + l.eye_position, &a[detail::kEyePosition], 3);
   if (l.eye_normal >= 0) copy_slot(v + l.eye_normal, &a[detail::kEyeNormal], 3);
-  if (l.texcoord >= 0) copy_slot(v + l.texcoord, &a[detail::kTexCoord], 2);
+  if (l.texcoord >= 0) copy_slot(v + l.texcoord, &a[detail::kTexCoord], 4);
   if (l.fog >= 0) a[detail::kFogCoord] = v[l.fog];
 }
 
@@ -152,7 +152,7 @@ void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v
   if (l.front_secondary >= 0) copy_slot(&a[detail::kFrontSecondary], v + l.front_secondary, 3);
   if (l.eye_position >= 0) copy_slot(&a[detail::kEyePosition], v + l.eye_position, 3);
   if (l.eye_normal >= 0) copy_slot(&a[detail::kEyeNormal], v + l.eye_normal, 3);
-  if (l.texcoord >= 0) copy_slot(&a[detail::kTexCoord], v + l.texcoord, 2);
+  if (l.texcoord >= 0) copy_slot(&a[detail::kTexCoord], v + l.texcoord, 4);
   if (l.fog >= 0) v[l.fog] = a[detail::kFogCoord];
 }
 

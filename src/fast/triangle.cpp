@@ -145,9 +145,7 @@ detail::Fragment reference_fragment(const DrawJob& job, const TriSetup& t, Worke
   if (job.shade->texture) {
     detail::FixedPoint p[3];
     for (int k = 0; k < 3; ++k) p[k] = {t.v[k]->sx, t.v[k]->sy};
-    detail::FixedPoint centre{std::int64_t(x) * detail::kSubpixelOne + detail::kSubpixelOne / 2,
-                              std::int64_t(y) * detail::kSubpixelOne + detail::kSubpixelOne / 2};
-    detail::texture_derivatives(v, p, centre, frag);
+    detail::texture_derivatives(v, p, x, y, job.fb->height, frag);
   }
   return frag;
 }

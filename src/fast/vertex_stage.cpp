@@ -213,8 +213,8 @@ void other_varyings(DrawJob& job, std::size_t i) {
     std::memcpy(v + l.eye_normal, &n, sizeof(float) * 3);
   }
   if (l.texcoord >= 0) {
-    glm::vec2 t = in.texcoords.empty() ? glm::vec2(0.0f) : in.texcoords[i];
-    std::memcpy(v + l.texcoord, &t, sizeof(float) * 2);
+    glm::vec4 t = in.texcoords.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : in.texcoords[i];
+    std::memcpy(v + l.texcoord, &t, sizeof(float) * 4);
   }
   if (l.fog >= 0) v[l.fog] = detail::fog_coordinate(in, i);
 }

@@ -85,10 +85,7 @@ std::vector<ClipVertex> vertex_stage(const glm::mat4& projection, const ShadeSta
     glm::vec4 p = in.positions[i];
     put(v.attr, kEyePosition, p.w != 0.0f ? glm::vec3(p) / p.w : glm::vec3(p));
     if (!in.normals.empty()) put(v.attr, kEyeNormal, in.normals[i]);
-    if (!in.texcoords.empty()) {
-      v.attr[kTexCoord] = in.texcoords[i].x;
-      v.attr[kTexCoord + 1] = in.texcoords[i].y;
-    }
+    if (!in.texcoords.empty()) put(v.attr, kTexCoord, in.texcoords[i]);
     v.attr[kFogCoord] = fog_coordinate(in, i);
   }
   return out;
@@ -136,18 +133,6 @@ float detail::polygon_offset(const WindowVertex& a, const WindowVertex& b,
   return static_cast<float>(f.offset_factor * m + f.offset_units * (1.0 / 16777216.0));
 }
 
-namespace {
-
-// GL 1.1 section 3.8.5: lambda = log2 of the larger screen-space footprint in texels.
-float texture_lambda(const Texture& t, const Fragment& f) {
-  float w = float(t.levels[0].width), h = float(t.levels[0].height);
-  float rx = std::hypot(f.ds_dx * w, f.dt_dx * h), ry = std::hypot(f.ds_dy * w, f.dt_dy * h);
-  float rho = std::max(rx, ry);
-  return rho > 0.0f ? std::log2(rho) : -1000.0f;
-}
-
-}  // namespace
-
 float detail::fog_coordinate(const VertexInput& in, std::size_t i) {
   return in.fog_coords.empty() ? std::fabs(in.positions[i].z) : in.fog_coords[i];
 }
@@ -173,7 +158,10 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
   glm::vec4 color = lit.primary;
   if (shade.texture) {
     const Texture& t = *shade.texture;
-    glm::vec4 texel = sample_texture(t, {a[kTexCoord], a[kTexCoord + 1]}, texture_lambda(t, f));
+    // GL 1.1 section 3.8: s / q and t / q per fragment (projective texture coordinates).
+    const float q = a[kTexCoord + 3];
+    const glm::vec2 st(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q));
+    glm::vec4 texel = sample_texture(t, st, texture_rho2(t, f.texture_derivatives));
     color = apply_texture_env(shade.texture_env, t.format, color, texel, t.env_color);
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped

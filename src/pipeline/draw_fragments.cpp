@@ -33,8 +33,7 @@ Fragment make_fragment(const FragmentRect& r, int x, int y, std::size_t i) {
   f.attr.fill(0.0f);
   const glm::vec4 c = r.colors.size() == 1 ? r.colors[0] : r.colors[i];
   for (int k = 0; k < 4; ++k) f.attr[detail::kFrontColor + k] = f.attr[detail::kBackColor + k] = c[k];
-  f.attr[detail::kTexCoord] = r.texcoord.x;
-  f.attr[detail::kTexCoord + 1] = r.texcoord.y;
+  for (int k = 0; k < 4; ++k) f.attr[detail::kTexCoord + k] = r.texcoord[k];
   f.attr[detail::kFogCoord] = r.fog_coord;
   return f;  // texture derivatives zero: the magnification filter
 }

@@ -33,7 +33,7 @@ std::vector<Light> lights_in_eye_space(const Scene& scene, const glm::mat4& view
 struct EyeMesh {
   std::vector<glm::vec4> positions;
   std::vector<glm::vec3> normals;
-  std::vector<glm::vec2> texcoords;  ///< scaled by the object's texture_repeat
+  std::vector<glm::vec4> texcoords;  ///< scaled by the object's texture_repeat; q = 1
 };
 
 EyeMesh to_eye_space(const Mesh& mesh, const glm::mat4& modelview) {
@@ -112,7 +112,7 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   in.normals = eye.normals;
   if (!shadow) in.colors = obj.mesh->colors;
   if (shade.texture) {
-    for (const glm::vec2& t : obj.mesh->texcoords) eye.texcoords.push_back(t * obj.texture_repeat);
+    for (const glm::vec2& t : obj.mesh->texcoords) eye.texcoords.emplace_back(t * obj.texture_repeat, 0.0f, 1.0f);
     in.texcoords = eye.texcoords;
   }
   in.constant_color = shadow ? *pass.shadow_color : obj.color;

@@ -21,9 +21,9 @@ enum Attr : int {
   kBackSecondary = 11,  // 3: separate specular, back
   kEyePosition = 14,    // 3: for per-pixel (Phong) lighting
   kEyeNormal = 17,      // 3
-  kTexCoord = 20,       // 2
-  kFogCoord = 22,       // 1: fog coordinate (eye-space distance), never flat
-  kAttrCount = 23,
+  kTexCoord = 20,       // 4: s, t, r, q (divided by q per fragment)
+  kFogCoord = 24,       // 1: fog coordinate (eye-space distance), never flat
+  kAttrCount = 25,
 };
 using Attribs = std::array<float, kAttrCount>;
 
@@ -61,9 +61,9 @@ struct Fragment {
   int x, y;
   float z;
   Attribs attr;  // perspective-correct
-  // Texture coordinate change to the next pixel right and up (for the level of detail);
-  // computed only when the rasterizer is asked for it.
-  float ds_dx = 0, dt_dx = 0, ds_dy = 0, dt_dy = 0;
+  // Differences of s / q and t / q over the fragment's 2x2 quad, llvmpipe's (for the level
+  // of detail); computed only when the rasterizer is asked for them.
+  TextureDerivatives texture_derivatives;
 };
 
 /// The viewport mapping of a clipped vertex (draw.cpp); its attributes stay in `v`.
@@ -76,7 +76,7 @@ float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowV
 /// Rasterizes one triangle with the top-left fill rule at pixel centres (8 sub-pixel bits),
 /// calling `emit(fragment)` for every covered pixel inside the scissor [0, width) x [0, height).
 /// Triangles with zero area produce nothing. Returns the number of covered pixels.
-/// With `texture_lod`, fragments also carry texture-coordinate derivatives.
+/// With `texture_lod`, fragments also carry their quad's texture-coordinate differences.
 template <class Emit>
 std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
                                  const WindowVertex& c, int width, int height, bool texture_lod,

@@ -1,5 +1,6 @@
-// Texture completeness, mipmap generation, filtered sampling with wrap modes and level of
-// detail, and the texture environment (GL 1.1 sections 3.8.1-3.8.9, table 3.22).
+// Texture completeness, mipmap generation, filtered sampling with wrap modes, the border
+// colour and llvmpipe's level-of-detail selection, and the texture environment (GL 1.1
+// sections 3.8.1-3.8.9, table 3.22).
 #include "shadelab/texture.hpp"
 
 #include <algorithm>
@@ -16,7 +17,7 @@ bool uses_mipmaps(TextureFilter f) {
 }
 
 // Texel coordinate i wrapped into [0, size) for repeat, or clamped (GL_CLAMP may return -1 or
-// size, meaning the border, which is black with alpha 0 by default).
+// size, meaning the border, which is the border colour).
 int wrap_index(int i, int size, TextureWrap wrap) {
   switch (wrap) {
     case TextureWrap::kRepeat: return ((i % size) + size) % size;
@@ -36,32 +37,70 @@ float wrap_coord(float s, int size, TextureWrap wrap) {
   return s - std::floor(s);
 }
 
+// Texel (i, j) of a level; j is ignored by 1D textures.
 glm::vec4 texel(const TextureLevel& l, int i, int j, const Texture& t) {
   i = wrap_index(i, l.width, t.wrap_s);
-  j = wrap_index(j, l.height, t.wrap_t);
-  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return glm::vec4(0.0f);  // border
-  const std::uint8_t* p = &l.rgba[(std::size_t(j) * l.width + i) * 4];
+  j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, t.wrap_t);
+  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return t.border_color;
+  const std::uint8_t* p = &l.rgba[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4];
   return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
 }
 
 glm::vec4 sample_level(const Texture& t, int level, glm::vec2 st, bool linear) {
   const TextureLevel& l = t.levels[std::size_t(level)];
-  float u = wrap_coord(st.x, l.width, t.wrap_s) * l.width;
-  float v = wrap_coord(st.y, l.height, t.wrap_t) * l.height;
+  const bool one_d = t.dimensions == 1;
+  float u = wrap_coord(st.x, l.width, t.wrap_s) * float(l.width);
+  float v = one_d ? 0.0f : wrap_coord(st.y, l.height, t.wrap_t) * float(l.height);
   if (!linear) {  // nearest never reads the border: s = 1 picks the last texel
     int i = int(std::floor(u)), j = int(std::floor(v));
     if (t.wrap_s != TextureWrap::kRepeat) i = std::clamp(i, 0, l.width - 1);
     if (t.wrap_t != TextureWrap::kRepeat) j = std::clamp(j, 0, l.height - 1);
     return texel(l, i, j, t);
   }
-  float uu = u - 0.5f, vv = v - 0.5f;
-  int i0 = int(std::floor(uu)), j0 = int(std::floor(vv));
-  float a = uu - std::floor(uu), b = vv - std::floor(vv);
+  float uu = u - 0.5f;
+  int i0 = int(std::floor(uu));
+  float a = uu - std::floor(uu);
+  if (one_d) return (1 - a) * texel(l, i0, 0, t) + a * texel(l, i0 + 1, 0, t);
+  float vv = v - 0.5f;
+  int j0 = int(std::floor(vv));
+  float b = vv - std::floor(vv);
   return (1 - a) * (1 - b) * texel(l, i0, j0, t) + a * (1 - b) * texel(l, i0 + 1, j0, t) +
          (1 - a) * b * texel(l, i0, j0 + 1, t) + a * b * texel(l, i0 + 1, j0 + 1, t);
 }
 
+// x = m 2^e with m in [0.5, 1) (frexp); 0, infinities and NaN count as 0 (llvmpipe replaces
+// an infinite or NaN rho by 0 as well).
+int exponent_of(float x, float& mantissa) {
+  int e = 0;
+  mantissa = std::isfinite(x) ? std::frexp(x, &e) : 0.0f;
+  return e;
+}
+
+// lp_build_fast_log2: floor(log2 x) - 1 + the mantissa in [1, 2); piecewise linear between
+// powers of two, where it is exact.
+float fast_log2(float x) {
+  float m;
+  int e = exponent_of(x, m);
+  if (m == 0.0f) return -128.0f;  // llvmpipe: exponent -127, mantissa 1
+  return float(e - 2) + 2.0f * m;
+}
+
+// lp_build_ilog2_sqrt: round(log2(sqrt(x))) from the exponent, (floor(log2 x) + 1) >> 1.
+int rounded_half_log2(float x) {
+  float m;
+  int e = exponent_of(x, m);
+  if (m == 0.0f) return -63;
+  return (e - 1 + 1) >> 1;  // arithmetic shift: floor for negative values too
+}
+
 }  // namespace
+
+int Texture::last_level() const {
+  if (levels.empty()) return 0;
+  int size = std::max(levels[0].width, dimensions == 1 ? 1 : levels[0].height), n = 0;
+  while (size > 1) size /= 2, ++n;
+  return std::min(n, int(levels.size()) - 1);
+}
 
 bool Texture::complete() const {
   if (levels.empty() || levels[0].width <= 0 || levels[0].height <= 0) return false;
@@ -102,26 +141,39 @@ void generate_mipmaps(Texture& texture) {
   }
 }
 
-glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float lambda) {
-  // GL 1.1 section 3.8.6: magnify when lambda <= c, c = 0.5 only for a linear mag filter with a
-  // nearest-mipmap min filter.
-  bool nearest_mip = t.min_filter == TextureFilter::kNearestMipmapNearest ||
-                     t.min_filter == TextureFilter::kNearestMipmapLinear;
-  float c = (t.mag_filter == TextureFilter::kLinear && nearest_mip) ? 0.5f : 0.0f;
-  if (!(lambda > c)) return sample_level(t, 0, st, t.mag_filter == TextureFilter::kLinear);
-  TextureFilter f = t.min_filter;
+// lp_build_rho (exact, "no_rho_approx", llvmpipe's default since Mesa 20): each difference
+// scaled by level 0's size and squared, in float.
+float texture_rho2(const Texture& t, const TextureDerivatives& d) {
+  const float w = float(t.levels[0].width), h = float(t.levels[0].height);
+  const float sx = d.ds_dx * w, sy = d.ds_dy * w;
+  if (t.dimensions == 1) return std::max(sx * sx, sy * sy);
+  const float tx = d.dt_dx * h, ty = d.dt_dy * h;
+  return std::max(sx * sx + tx * tx, sy * sy + ty * ty);
+}
+
+float finite_texcoord(float v) {
+  constexpr float kLimit = 1048576.0f;
+  return v > -kLimit ? (v < kLimit ? v : kLimit) : (v == v ? -kLimit : 0.0f);
+}
+
+// lp_build_lod_selector and lp_build_sample_soa's level choice (GL 1.1 section 3.8.6 with the
+// later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR where the lod,
+// 0.5 fast_log2(rho2), is above 0); levels past the last one clamp.
+glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2) {
+  const TextureFilter f = t.min_filter;
+  const bool linear_mip = f == TextureFilter::kNearestMipmapLinear || f == TextureFilter::kLinearMipmapLinear;
+  const float lod = linear_mip ? 0.5f * fast_log2(rho2) : 0.0f;
+  const bool minified = linear_mip ? lod > 0.0f : rho2 > 1.0f;
+  if (!minified) return sample_level(t, 0, st, t.mag_filter == TextureFilter::kLinear);
   if (!uses_mipmaps(f)) return sample_level(t, 0, st, f == TextureFilter::kLinear);
-  int max_level = int(t.levels.size()) - 1;
-  bool linear_in_level = f == TextureFilter::kLinearMipmapNearest || f == TextureFilter::kLinearMipmapLinear;
-  if (f == TextureFilter::kNearestMipmapNearest || f == TextureFilter::kLinearMipmapNearest) {
-    int d = lambda <= 0.5f ? 0 : int(std::ceil(lambda + 0.5f)) - 1;
-    return sample_level(t, std::min(d, max_level), st, linear_in_level);
-  }
-  if (lambda >= float(max_level)) return sample_level(t, max_level, st, linear_in_level);
-  int d1 = int(std::floor(lambda));
-  float frac = lambda - float(d1);
-  return (1.0f - frac) * sample_level(t, d1, st, linear_in_level) +
-         frac * sample_level(t, d1 + 1, st, linear_in_level);
+  const int last = t.last_level();
+  const bool linear_in_level = f == TextureFilter::kLinearMipmapNearest || f == TextureFilter::kLinearMipmapLinear;
+  if (!linear_mip) return sample_level(t, std::clamp(rounded_half_log2(rho2), 0, last), st, linear_in_level);
+  const int level = int(std::floor(lod));
+  const float frac = lod - float(level);
+  if (level >= last) return sample_level(t, last, st, linear_in_level);
+  return (1.0f - frac) * sample_level(t, level, st, linear_in_level) +
+         frac * sample_level(t, level + 1, st, linear_in_level);
 }
 
 glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm::vec4& f,

@@ -17,7 +17,7 @@ namespace shadelab::test {
 struct RandomDraw {
   std::vector<glm::vec4> positions, colors, back_colors;
   std::vector<glm::vec3> normals, secondary, back_secondary;
-  std::vector<glm::vec2> texcoords;
+  std::vector<glm::vec4> texcoords;  // (s, t, r, q); q != 1 in some draws (projective)
   std::vector<float> fog_coords;
   std::vector<Triangle> triangles;
   std::vector<std::uint8_t> triangle_flags;
@@ -295,7 +295,13 @@ class RandomDraws {
     if (chance(0.2)) for (std::size_t i = 0; i < n; ++i) d.back_colors.push_back(color(0.1f));
     if (chance(0.2)) for (std::size_t i = 0; i < n; ++i) d.secondary.push_back(glm::vec3(color()));
     if (chance(0.1)) for (std::size_t i = 0; i < n; ++i) d.back_secondary.push_back(glm::vec3(color()));
-    if (chance(0.8)) for (std::size_t i = 0; i < n; ++i) d.texcoords.push_back({uniform(-2, 3), uniform(-2, 3)});
+    if (chance(0.8)) {
+      const bool projective = chance(0.3);
+      for (std::size_t i = 0; i < n; ++i) {
+        const float q = projective ? uniform(0.25f, 3.0f) : 1.0f;
+        d.texcoords.push_back({uniform(-2, 3) * q, uniform(-2, 3) * q, uniform(-1, 1), q});
+      }
+    }
     d.constant_color = color(0.1f);
   }
 
@@ -388,8 +394,9 @@ class RandomDraws {
   std::shared_ptr<Texture> texture() {
     auto t = std::make_shared<Texture>();
     TextureLevel level;
+    t->dimensions = chance(0.2) ? 1 : 2;
     level.width = 1 << integer(0, 4);
-    level.height = 1 << integer(0, 4);
+    level.height = t->dimensions == 1 ? 1 : 1 << integer(0, 4);
     for (int i = 0; i < level.width * level.height * 4; ++i) level.rgba.push_back(std::uint8_t(integer(0, 255)));
     t->levels.push_back(level);
     if (chance(0.7)) generate_mipmaps(*t);
@@ -399,6 +406,7 @@ class RandomDraws {
     t->min_filter = TextureFilter(integer(0, 5));
     t->mag_filter = chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
     t->env_color = color();
+    t->border_color = color(0.0f);
     return t;
   }
 

@@ -1,0 +1,195 @@
+// Texture images (GL 1.1 sections 3.8.1, 3.8.2): glTexImage1D/2D with every GL 1.1 internal
+// format, the proxy targets, glTexSubImage1D/2D, and the storage shared with the copies
+// (texcopy.cpp). Errors and their order are Mesa's (teximage.c's texture_error_check and
+// texsubimage_error_check). As in Mesa's gallium drivers, a border is stripped from the
+// image when it is stored (GL_CLAMP blends in GL_TEXTURE_BORDER_COLOR instead); proxies keep
+// the sizes as given.
+#include <algorithm>
+#include <cmath>
+
+#include "gl/generated/exec.hpp"
+#include "gl/src/pixels.hpp"
+#include "gl/src/texture.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+bool is_pixel_type(GLenum type) {
+  return type == GL_BITMAP || pixel_type_size(type) != 0;
+}
+
+bool is_pixel_format(GLenum format) {
+  return color_format_components(format) != 0 || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ||
+         format == GL_DEPTH_COMPONENT;
+}
+
+// Mesa's _mesa_error_check_format_and_type and texture_formats_agree for a colour texture:
+// unknown enums and GL_BITMAP with other than an index format are GL_INVALID_ENUM, depth and
+// stencil images GL_INVALID_OPERATION.
+GLenum check_format_and_type(GLenum format, GLenum type) {
+  if (!is_pixel_format(format) || !is_pixel_type(type)) return GL_INVALID_ENUM;
+  if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
+  return GL_NO_ERROR;
+}
+
+bool formats_agree(GLenum format) { return format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX; }
+
+// Mesa's _mesa_legal_texture_dimensions: each side from 2 border to 2 border + the largest
+// size at that level (any size in between: non-power-of-two sizes are accepted).
+bool legal_size(int size, int border, int level) {
+  const long max = long(kMaxTextureSize) >> level;
+  return size >= 2 * border && long(size) <= 2 * border + max;
+}
+
+std::vector<TexImage>& proxy_images(GlContext& c, GLenum target) {
+  return target == GL_PROXY_TEXTURE_1D ? c.textures.proxy_1d : c.textures.proxy_2d;
+}
+
+// A proxy's level as glTexImage would have made it (sizes as given, border kept), or cleared
+// when the image could not be made.
+void set_proxy(GlContext& c, GLenum target, int level, GLint internal, int width, int height, int border, bool ok) {
+  std::vector<TexImage>& images = proxy_images(c, target);
+  if (images.size() <= std::size_t(level)) images.resize(std::size_t(level) + 1);
+  TexImage& img = images[std::size_t(level)];
+  img = TexImage{};
+  if (!ok) return;
+  img.defined = true;
+  img.width = width, img.height = height, img.border = border;
+  img.internal_format = internal;
+  stored_format(internal, img.format);
+}
+
+// The client image's pixels as RGBA, its border skipped (`skip` pixels on each side it has).
+RgbaImage unpack(const GlContext& c, int row_pixels, int skip_x, int skip_y, int width, int height, GLenum format,
+                 GLenum type, const void* pixels) {
+  RgbaImage image;
+  image.width = width, image.height = height;
+  image.rgba.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
+  image.exact_bytes = type == GL_UNSIGNED_BYTE && format != GL_COLOR_INDEX;
+  if (pixels && width > 0 && height > 0) {
+    unpack_rgba_image(c, c.unpack, row_pixels, skip_x, skip_y, width, height, format, type, pixels, image.rgba.data());
+  }
+  return image;
+}
+
+// glTexImage1D (dims 1, height 1) and glTexImage2D.
+void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint internal, GLsizei width, GLsizei height,
+               GLint border, GLenum format, GLenum type, const void* pixels) {
+  const GLenum plain = dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+  const GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : GL_PROXY_TEXTURE_2D;
+  if (target != plain && target != proxy) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
+  if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
+  StoredFormat stored;
+  if (!stored_format(internal, stored)) return c.set_error(GL_INVALID_VALUE);
+  if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
+  const bool legal = legal_size(width, border, level) && (dims == 1 || legal_size(height, border, level));
+  if (target == proxy) return set_proxy(c, target, level, internal, width, height, border, legal);
+  if (!legal) return c.set_error(GL_INVALID_VALUE);
+  // Mesa's strip_texture_border: the border's pixels are skipped, the sides lose two.
+  const int inner_w = width - 2 * border;
+  const bool strip_rows = dims == 2 && border && height >= 3;
+  const int inner_h = strip_rows ? height - 2 : height;
+  TextureObject& t = *bound_texture(c, target);
+  RgbaImage image = unpack(c, width, border, strip_rows ? 1 : 0, inner_w, inner_h, format, type, pixels);
+  define_level(t, level, internal, inner_w, inner_h);
+  store_texels(image, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+}
+
+// glTexSubImage1D (dims 1) and glTexSubImage2D.
+void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, GLint y, GLsizei width,
+                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
+  TextureObject& t = *bound_texture(c, target);
+  if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
+    return c.set_error(GL_INVALID_OPERATION);
+  }
+  TexImage& img = t.images[std::size_t(level)];
+  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
+  if (x < 0 || y < 0 || long(x) + width > img.width || long(y) + height > img.height) return c.set_error(GL_INVALID_VALUE);
+  if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
+  if (width == 0 || height == 0 || !pixels) return;
+  RgbaImage image = unpack(c, width, 0, 0, width, height, format, type, pixels);
+  store_texels(image, x, y, img, t.texture.levels[std::size_t(level)]);
+}
+
+}  // namespace
+
+bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height) {
+  StoredFormat format;
+  if (!stored_format(internal_format, format)) return false;
+  const std::size_t l = std::size_t(level);
+  if (t.images.size() <= l) t.images.resize(l + 1);
+  if (t.texture.levels.size() <= l) t.texture.levels.resize(l + 1);
+  const std::size_t texels = std::size_t(width) * std::size_t(height);
+  TexImage& img = t.images[l];
+  img = TexImage{};
+  img.defined = true;
+  img.width = width, img.height = height;
+  img.internal_format = internal_format;
+  img.format = format;
+  if (format.wide()) img.wide.assign(texels * std::size_t(format.components), 0);
+  TextureLevel& core = t.texture.levels[l];
+  core.width = width, core.height = height;
+  core.rgba.assign(texels * 4, 0);
+  if (level == 0) t.texture.format = format.base;
+  return true;
+}
+
+namespace {
+
+// A component in [0, 1] as `bits` bits, as Mesa stores it (see RgbaImage).
+std::uint16_t stored_value(const RgbaImage& image, float v, int bits) {
+  if (!image.exact_bytes) return quantize(v, bits);
+  const auto byte = std::uint8_t(std::lround(v * 255.0f));
+  return image.from_framebuffer && bits == 5 ? std::uint16_t(byte >> 3) : quantize_byte(byte, bits);
+}
+
+}  // namespace
+
+void store_texels(const RgbaImage& image, int x0, int y0, TexImage& level, TextureLevel& core) {
+  const StoredFormat& f = level.format;
+  const std::size_t n = std::size_t(f.components);
+  const float* in = image.rgba.data();
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x, in += 4) {
+      const std::size_t texel = std::size_t(y0 + y) * std::size_t(level.width) + std::size_t(x0 + x);
+      float comps[4];
+      base_components(f.base, in, comps);
+      std::uint8_t bytes[4];
+      for (std::size_t i = 0; i < n; ++i) {
+        const int bits = f.bits[i];
+        const std::uint16_t k = stored_value(image, comps[i], bits);
+        if (!level.wide.empty()) level.wide[texel * n + i] = k;
+        bytes[i] = stored_to_byte(k, bits);
+      }
+      expand_texel(f.base, bytes, &core.rgba[texel * 4]);
+    }
+  }
+}
+
+void exec::TexImage1D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
+                      GLenum format, GLenum type, const void* pixels) {
+  tex_image(c, 1, target, level, internalformat, width, 1, border, format, type, pixels);
+}
+
+void exec::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                      GLint border, GLenum format, GLenum type, const void* pixels) {
+  tex_image(c, 2, target, level, internalformat, width, height, border, format, type, pixels);
+}
+
+void exec::TexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
+                         GLenum type, const void* pixels) {
+  tex_sub_image(c, 1, target, level, xoffset, 0, width, 1, format, type, pixels);
+}
+
+void exec::TexSubImage2D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                         GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  tex_sub_image(c, 2, target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+}  // namespace shadelab::gl

@@ -1,0 +1,183 @@
+// Texture image queries (GL 1.1 section 6.1.4): glGetTexLevelParameter{iv,fv} for the
+// texture and proxy targets, and glGetTexImage, which packs a level's texels as glReadPixels
+// packs pixels (every format and type, the pack state). Values, errors and the conversions
+// are Mesa's (texparam.c, texgetimage.c), measured on Debian's Mesa 22: an undefined level
+// reports GL_RGBA and zero sizes, luminance is read back as R alone, integers are converted
+// from the stored precision as Mesa's unorm conversions do. Reads state only.
+#include <cmath>
+#include <cstring>
+
+#include "gl/generated/exec.hpp"
+#include "gl/src/convert.hpp"
+#include "gl/src/pixels.hpp"
+#include "gl/src/texture.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+constexpr GLenum kTextureDepth = 0x8071;  // GL 1.2's GL_TEXTURE_DEPTH, which Mesa answers too
+
+const std::vector<TexImage>* level_images(GlContext& c, GLenum target) {
+  switch (target) {
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: return &bound_texture(c, target)->images;
+    case GL_PROXY_TEXTURE_1D: return &c.textures.proxy_1d;
+    case GL_PROXY_TEXTURE_2D: return &c.textures.proxy_2d;
+    default: return nullptr;
+  }
+}
+
+bool is_level_pname(GLenum pname) {
+  switch (pname) {
+    case GL_TEXTURE_WIDTH: case GL_TEXTURE_HEIGHT: case kTextureDepth: case GL_TEXTURE_BORDER:
+    case GL_TEXTURE_INTERNAL_FORMAT: case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE:
+    case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_LUMINANCE_SIZE:
+    case GL_TEXTURE_INTENSITY_SIZE:
+      return true;
+    default: return false;
+  }
+}
+
+// GL_TEXTURE_DEPTH (GL 1.2's) is accepted as Mesa accepts it: 1 for a defined image.
+GLint level_parameter(const TexImage& img, GLenum pname) {
+  if (!img.defined) return pname == GL_TEXTURE_INTERNAL_FORMAT ? GL_RGBA : 0;
+  switch (pname) {
+    case GL_TEXTURE_WIDTH: return img.width;
+    case GL_TEXTURE_HEIGHT: return img.height;
+    case kTextureDepth: return 1;
+    case GL_TEXTURE_BORDER: return img.border;
+    case GL_TEXTURE_INTERNAL_FORMAT: return img.internal_format;
+    default: return component_size(img.format, pname);
+  }
+}
+
+template <class T>
+void get_level_parameter(GlContext& c, GLenum target, GLint level, GLenum pname, T* params) {
+  const std::vector<TexImage>* images = level_images(c, target);
+  if (!images) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (!is_level_pname(pname)) return c.set_error(GL_INVALID_ENUM);
+  if (!params) return;
+  const TexImage none;
+  const TexImage& img = std::size_t(level) < images->size() ? (*images)[std::size_t(level)] : none;
+  *params = T(level_parameter(img, pname));
+}
+
+// A component as Mesa keeps it: an n-bit value (constants 0 and 1 as one-bit values).
+struct Stored {
+  std::uint16_t k;
+  int bits;
+  double unit() const { return double(k) / double((1u << bits) - 1u); }
+};
+
+// Texel i of a level as RGBA stored values (GL 1.1 table 6.1: L and I read back in R).
+void texel_rgba(const TexImage& img, const TextureLevel& core, std::size_t i, Stored out[4]) {
+  const StoredFormat& f = img.format;
+  Stored comps[4];
+  for (int k = 0; k < f.components; ++k) {
+    const int bits = f.bits[k];
+    std::uint16_t v;
+    if (f.wide()) {
+      v = img.wide[i * std::size_t(f.components) + std::size_t(k)];
+    } else {  // the byte of the core's expansion that holds component k
+      const int channel = f.base == TextureFormat::kAlpha || (f.base == TextureFormat::kLuminanceAlpha && k == 1) ? 3 : k;
+      v = byte_to_stored(core.rgba[i * 4 + std::size_t(channel)], bits);
+    }
+    comps[k] = {v, bits};
+  }
+  out[0] = out[1] = out[2] = {0, 1};
+  out[3] = {1, 1};
+  switch (f.base) {
+    case TextureFormat::kAlpha: out[3] = comps[0]; break;
+    case TextureFormat::kLuminance: case TextureFormat::kIntensity: out[0] = comps[0]; break;
+    case TextureFormat::kLuminanceAlpha: out[0] = comps[0], out[3] = comps[1]; break;
+    case TextureFormat::kRgb: for (int k = 0; k < 3; ++k) out[k] = comps[k]; break;
+    case TextureFormat::kRgba: for (int k = 0; k < 4; ++k) out[k] = comps[k]; break;
+  }
+}
+
+// The components of `format` taken from RGBA (luminance is R, as Mesa's glGetTexImage).
+int select_components(GLenum format, const Stored rgba[4], Stored out[4]) {
+  const int order[][4] = {{0}, {1}, {2}, {3}, {0}, {0, 3}, {0, 1, 2}, {2, 1, 0}, {0, 1, 2, 3}, {2, 1, 0, 3}};
+  int which;
+  switch (format) {
+    case GL_RED: which = 0; break;
+    case GL_GREEN: which = 1; break;
+    case GL_BLUE: which = 2; break;
+    case GL_ALPHA: which = 3; break;
+    case GL_LUMINANCE: which = 4; break;
+    case GL_LUMINANCE_ALPHA: which = 5; break;
+    case GL_RGB: which = 6; break;
+    case GL_BGR: which = 7; break;
+    case GL_RGBA: which = 8; break;
+    case GL_BGRA: which = 9; break;
+    default: return 0;
+  }
+  const int n = color_format_components(format);
+  for (int k = 0; k < n; ++k) out[k] = rgba[order[which][k]];
+  return n;
+}
+
+template <class T>
+void put(unsigned char* p, T v, bool swap) {
+  unsigned char b[sizeof v];
+  std::memcpy(b, &v, sizeof v);
+  for (std::size_t k = 0; k < sizeof v; ++k) p[k] = b[swap ? sizeof v - 1 - k : k];
+}
+
+// One component as `type`: unsigned bytes and shorts by Mesa's unorm conversions of the
+// stored value, the other types rounded from its value in [0, 1].
+void pack_component(const Stored& s, GLenum type, bool swap, unsigned char* p) {
+  const double v = s.unit();
+  switch (type) {
+    case GL_UNSIGNED_BYTE: *p = stored_to_byte(s.k, s.bits); return;
+    case GL_UNSIGNED_SHORT: return put(p, GLushort(stored_to_ushort(s.k, s.bits)), swap);
+    case GL_UNSIGNED_INT: return put(p, GLuint(std::llround(v * 4294967295.0)), swap);
+    case GL_BYTE: *p = static_cast<unsigned char>(GLbyte(std::lround(v * 127.0))); return;
+    case GL_SHORT: return put(p, GLshort(std::lround(v * 32767.0)), swap);
+    case GL_INT: return put(p, GLint(std::llround(v * 2147483647.0)), swap);
+    case GL_FLOAT: return put(p, stored_to_float(s.k, s.bits), swap);
+    default: return;
+  }
+}
+
+void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  const bool known_format = color_format_components(format) != 0 || format == GL_COLOR_INDEX ||
+                            format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
+  if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
+  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) return c.set_error(GL_INVALID_OPERATION);
+  TextureObject& t = *bound_texture(c, target);
+  if (std::size_t(level) >= t.images.size() || !t.images[std::size_t(level)].defined || !pixels) return;
+  if (format == GL_COLOR_INDEX) return;  // no index textures in an RGBA context: nothing is written
+  const TexImage& img = t.images[std::size_t(level)];
+  const TextureLevel& core = t.texture.levels[std::size_t(level)];
+  const int n = color_format_components(format), size = pixel_type_size(type);
+  const PixelLayout layout = pixel_layout(c.pack, n, size, img.width);
+  auto* out = static_cast<unsigned char*>(pixels);
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      Stored rgba[4], comps[4];
+      texel_rgba(img, core, std::size_t(y) * std::size_t(img.width) + std::size_t(x), rgba);
+      select_components(format, rgba, comps);
+      unsigned char* p = out + layout.offset(x, y);
+      for (int k = 0; k < n; ++k) pack_component(comps[k], type, c.pack.swap_bytes, p + k * size);
+    }
+  }
+}
+
+}  // namespace
+
+void exec::GetTexLevelParameteriv(GlContext& c, GLenum target, GLint level, GLenum pname, GLint* params) {
+  get_level_parameter(c, target, level, pname, params);
+}
+
+void exec::GetTexLevelParameterfv(GlContext& c, GLenum target, GLint level, GLenum pname, GLfloat* params) {
+  get_level_parameter(c, target, level, pname, params);
+}
+
+void exec::GetTexImage(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
+  get_tex_image(c, target, level, format, type, pixels);
+}
+
+}  // namespace shadelab::gl

@@ -1,0 +1,47 @@
+// What the texture files share (GL 1.1 section 3.8): the object bound to a target, the
+// texture the pipeline samples, and the image operations the copy and query commands reuse.
+// No entry points here.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "gl/src/context.hpp"
+
+namespace shadelab::gl {
+
+/// The object bound to GL_TEXTURE_1D or GL_TEXTURE_2D (the target's default object while
+/// name 0 is bound); nullptr for any other target.
+TextureObject* bound_texture(GlContext& c, GLenum target);
+
+/// The texture to apply (GL 1.1 section 3.8.9), or nullptr: GL_TEXTURE_2D when enabled and
+/// complete, else GL_TEXTURE_1D when enabled and complete (an incomplete texture is as if
+/// its target were disabled, as in Mesa).
+const Texture* active_texture(GlContext& c);
+
+/// Pixels as RGBA floats, row by row from the first, ready to be stored into a texture:
+/// `exact_bytes` when they were unsigned bytes passed through unchanged (then stored exactly
+/// as Mesa stores bytes); `from_framebuffer` for glCopyTex*, whose 5-bit components llvmpipe
+/// truncates (measured: its copy renders into the texture) where glTexImage rounds.
+struct RgbaImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;
+  bool exact_bytes = false;
+  bool from_framebuffer = false;
+};
+
+/// Stores `image` as texels (converted to `image_format`'s storage) at (x, y) of a level
+/// whose storage is described by `level` and `core`, both already sized.
+void store_texels(const RgbaImage& image, int x, int y, TexImage& level, TextureLevel& core);
+
+/// Makes level `level` of `t` a width x height image of `internal_format` (contents zero),
+/// with the core's format and dimensions following level 0; false (nothing changed) when the
+/// internal format is not one.
+bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height);
+
+/// The number of levels a texture of `target` may have (GL_MAX_TEXTURE_SIZE's log2 + 1).
+inline constexpr int max_texture_levels() { return kMaxTextureLevels; }
+
+}  // namespace shadelab::gl
