@@ -54,7 +54,9 @@ struct RandomDraw {
 
 class RandomDraws {
  public:
-  explicit RandomDraws(unsigned seed) : rng_(seed) {}
+  // The projective q, r and 1D/border choices of textures come from a second stream, so that
+  // adding them left every other choice of a seed's scene as it was.
+  explicit RandomDraws(unsigned seed) : rng_(seed), texture_rng_(seed ^ 0x5eedu) {}
 
   float uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng_); }
   int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng_); }
@@ -296,10 +298,11 @@ class RandomDraws {
     if (chance(0.2)) for (std::size_t i = 0; i < n; ++i) d.secondary.push_back(glm::vec3(color()));
     if (chance(0.1)) for (std::size_t i = 0; i < n; ++i) d.back_secondary.push_back(glm::vec3(color()));
     if (chance(0.8)) {
-      const bool projective = chance(0.3);
+      const bool projective = texture_chance(0.3);
       for (std::size_t i = 0; i < n; ++i) {
-        const float q = projective ? uniform(0.25f, 3.0f) : 1.0f;
-        d.texcoords.push_back({uniform(-2, 3) * q, uniform(-2, 3) * q, uniform(-1, 1), q});
+        const float s = uniform(-2, 3), t = uniform(-2, 3);
+        const float q = projective ? texture_uniform(0.25f, 3.0f) : 1.0f;
+        d.texcoords.push_back({s * q, t * q, texture_uniform(-1, 1), q});
       }
     }
     d.constant_color = color(0.1f);
@@ -394,7 +397,7 @@ class RandomDraws {
   std::shared_ptr<Texture> texture() {
     auto t = std::make_shared<Texture>();
     TextureLevel level;
-    t->dimensions = chance(0.2) ? 1 : 2;
+    t->dimensions = texture_chance(0.2) ? 1 : 2;
     level.width = 1 << integer(0, 4);
     level.height = t->dimensions == 1 ? 1 : 1 << integer(0, 4);
     for (int i = 0; i < level.width * level.height * 4; ++i) level.rgba.push_back(std::uint8_t(integer(0, 255)));
@@ -406,7 +409,7 @@ class RandomDraws {
     t->min_filter = TextureFilter(integer(0, 5));
     t->mag_filter = chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
     t->env_color = color();
-    t->border_color = color(0.0f);
+    t->border_color = {texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1)};
     return t;
   }
 
@@ -445,6 +448,10 @@ class RandomDraws {
   }
 
   std::mt19937 rng_;
+  std::mt19937 texture_rng_;
+
+  float texture_uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(texture_rng_); }
+  bool texture_chance(double p) { return std::bernoulli_distribution(p)(texture_rng_); }
 };
 
 }  // namespace shadelab::test
