@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/convert.hpp"
 
 namespace shadelab::gl {
@@ -121,6 +122,11 @@ glm::vec4 generate_texcoords(const TextureState& t, glm::vec4 current, const glm
   }
   return current;
 }
+
+// How many values the vector forms read, for their display-list savers.
+std::size_t save_count::TexGeniv(GLenum pname) { return pname == GL_OBJECT_PLANE || pname == GL_EYE_PLANE ? 4 : 1; }
+std::size_t save_count::TexGenfv(GLenum pname) { return pname == GL_OBJECT_PLANE || pname == GL_EYE_PLANE ? 4 : 1; }
+std::size_t save_count::TexGendv(GLenum pname) { return pname == GL_OBJECT_PLANE || pname == GL_EYE_PLANE ? 4 : 1; }
 
 void exec::TexGeni(GlContext& c, GLenum coord, GLenum pname, GLint param) { tex_gen_1(c, coord, pname, param); }
 void exec::TexGenf(GlContext& c, GLenum coord, GLenum pname, GLfloat param) { tex_gen_1(c, coord, pname, param); }

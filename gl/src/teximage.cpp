@@ -8,6 +8,8 @@
 #include <cmath>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/run.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/pixels.hpp"
 #include "gl/src/texture.hpp"
 
@@ -117,6 +119,24 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   store_texels(image, x, y, img, t.texture.levels[std::size_t(level)]);
 }
 
+// What a display list keeps of a client image (GL 1.1 section 5.4): its pixels as the unpack
+// state of the moment reads them, tightly packed (the list replays the command with the
+// default unpack state); empty when the command will not read them (it is then recorded
+// without pixels and fails, or makes an image of undefined contents, when the list runs).
+std::vector<unsigned char> list_image(const GlContext& c, int width, int height, GLenum format, GLenum type,
+                                      const void* pixels) {
+  const int limit = kMaxTextureSize + 2;
+  if (!pixels || width <= 0 || height <= 0 || width > limit || height > limit) return {};
+  if (type == GL_BITMAP) {
+    return format == GL_COLOR_INDEX ? copy_bitmap(c.unpack, width, height, pixels) : std::vector<unsigned char>{};
+  }
+  const int components = format == GL_COLOR_INDEX ? 1 : color_format_components(format), size = pixel_type_size(type);
+  if (components == 0 || size == 0) return {};
+  return copy_image(c.unpack, width, height, components, size, pixels);
+}
+
+const void* data_or_null(const std::vector<unsigned char>& image) { return image.empty() ? nullptr : image.data(); }
+
 }  // namespace
 
 bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height) {
@@ -190,6 +210,44 @@ void exec::TexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset
 void exec::TexSubImage2D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
                          GLsizei height, GLenum format, GLenum type, const void* pixels) {
   tex_sub_image(c, 2, target, level, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+// Display-list savers (gl/generated/save.hpp). Proxies are queries: executed at once and
+// not compiled, as in Mesa.
+void save::TexImage1D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
+                      GLenum format, GLenum type, const void* pixels) {
+  if (target == GL_PROXY_TEXTURE_1D) {
+    if (c.lists.mode == GL_COMPILE) run::TexImage1D(c, target, level, internalformat, width, border, format, type, pixels);
+    return;
+  }
+  const std::vector<unsigned char> image = list_image(c, width, 1, format, type, pixels);
+  record::TexImage1D(c, target, level, internalformat, width, border, format, type, data_or_null(image), image.size());
+}
+
+void save::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                      GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (target == GL_PROXY_TEXTURE_2D) {
+    if (c.lists.mode == GL_COMPILE) {
+      run::TexImage2D(c, target, level, internalformat, width, height, border, format, type, pixels);
+    }
+    return;
+  }
+  const std::vector<unsigned char> image = list_image(c, width, height, format, type, pixels);
+  record::TexImage2D(c, target, level, internalformat, width, height, border, format, type, data_or_null(image),
+                     image.size());
+}
+
+void save::TexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
+                         GLenum type, const void* pixels) {
+  const std::vector<unsigned char> image = list_image(c, width, 1, format, type, pixels);
+  record::TexSubImage1D(c, target, level, xoffset, width, format, type, data_or_null(image), image.size());
+}
+
+void save::TexSubImage2D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                         GLsizei height, GLenum format, GLenum type, const void* pixels) {
+  const std::vector<unsigned char> image = list_image(c, width, height, format, type, pixels);
+  record::TexSubImage2D(c, target, level, xoffset, yoffset, width, height, format, type, data_or_null(image),
+                        image.size());
 }
 
 }  // namespace shadelab::gl
