@@ -63,12 +63,6 @@ ZoomedSpan zoomed_span(int start, int n, float zoom, int limit) {
   return z;
 }
 
-// Texture coordinates (s / q, t / q) of the raster position.
-glm::vec2 raster_texcoord(const RasterPosition& r) {
-  const glm::vec4& t = r.texcoord;
-  return t.w != 0.0f && t.w != 1.0f ? glm::vec2(t.x / t.w, t.y / t.w) : glm::vec2(t.x, t.y);
-}
-
 // A stencil image written through the write mask and the scissor box: the pixel ownership
 // and scissor tests and nothing else apply (section 4.3.1; llvmpipe draws it with the
 // scissor on and every other test off).
@@ -120,7 +114,7 @@ void draw_fragments_of(GlContext& c, const PixelImage& img, const ZoomedSpan& xs
   rect.depth = r.window.z;
   rect.depths = depths;
   rect.mask = mask;
-  rect.texcoord = raster_texcoord(r);
+  rect.texcoord = r.texcoord;  // s / q and t / q are taken per fragment by the core
   rect.fog_coord = r.distance;  // section 3.6.4: the raster position's (Mesa takes 0)
   make_pipeline(c);
   draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, nullptr, c.pipeline.get());
