@@ -1,9 +1,10 @@
 // Sequences of GL calls: the input bytes are decoded into libshadelab-gl calls on a 32x32
 // OSMesa context, with arbitrary enums (valid and not), values (NaN, infinities, huge,
 // negative), calls between glBegin and glEnd or outside, in any order, compiled into display
-// lists or not (lists calling lists, themselves, glCallLists over up to 65,536 names). Only what OpenGL cannot
-// defend against is kept valid: every pointer handed to the library points into buffers of
-// this program that are large enough for what the call may read or write.
+// lists or not (lists calling lists, themselves, glCallLists over up to 65,536 names), evaluator
+// maps of every order and the meshes they draw. Only what OpenGL cannot defend against is kept
+// valid: every pointer handed to the library points into buffers of this program that are large
+// enough for what the call may read or write.
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
@@ -153,7 +154,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GLfloat f[4];
   int calls = 0;
   while (!in.done() && ++calls < 400) {
-    switch (in.byte() % 64) {
+    const std::uint8_t op = in.byte();
+    // Evaluators take the three highest bytes (which chose cases 61 to 63 before them).
+    switch (op >= 253 ? 64 + (op - 253) : op % 64) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -369,6 +372,43 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         glGetPixelMapfv(map, reinterpret_cast<GLfloat*>(b->pixels));
         glGetPixelMapuiv(map, reinterpret_cast<GLuint*>(b->pixels));
         glGetPixelMapusv(map, reinterpret_cast<GLushort*>(b->pixels));
+        break;
+      }
+      case 64: {  // glMap1/glMap2 of any target, orders up to 31, strides up to 128 values
+        // (the largest read, 30 * 128 * 2 + 4 doubles, stays inside b->pixels)
+        const GLenum target = GLenum((in.byte() % 2 ? GL_MAP1_COLOR_4 : GL_MAP2_COLOR_4) + in.small(-1, 9));
+        const int uorder = in.small(0, 31), vorder = in.small(0, 31);
+        const int ustride = in.small(-1, 128), vstride = in.small(-1, 128);
+        const float u1 = in.number(), u2 = in.number(), v1 = in.number(), v2 = in.number();
+        const auto* fp = reinterpret_cast<const GLfloat*>(b->pixels);
+        const auto* dp = reinterpret_cast<const GLdouble*>(b->pixels);
+        switch (in.byte() % 4) {
+          case 0: glMap1f(target, u1, u2, ustride, uorder, in.byte() % 8 ? fp : nullptr); break;
+          case 1: glMap1d(target, u1, u2, ustride, uorder, dp); break;
+          case 2: glMap2f(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, fp); break;
+          default: glMap2d(target, u1, u2, ustride, uorder, v1, v2, vstride, vorder, in.byte() % 8 ? dp : nullptr);
+        }
+        break;
+      }
+      case 65: {  // grids and meshes (at most 9 x 9 grid points a mesh)
+        const int un = in.small(-1, 8), vn = in.small(-1, 8);
+        if (in.byte() % 2) glMapGrid1f(un, in.number(), in.number());
+        else glMapGrid2d(un, in.number(), in.number(), vn, in.number(), in.number());
+        const int i1 = in.small(-4, 8), j1 = in.small(-4, 8);
+        if (in.byte() % 2) glEvalMesh1(in.any_enum(), i1, i1 + in.small(-1, 8));
+        else glEvalMesh2(in.byte() % 2 ? GL_FILL : in.any_enum(), i1, i1 + in.small(-1, 8), j1, j1 + in.small(-1, 8));
+        break;
+      }
+      case 66: {  // evaluation (in or out of glBegin) and glGetMap into b->pixels
+        const GLenum target = GLenum((in.byte() % 2 ? GL_MAP1_COLOR_4 : GL_MAP2_COLOR_4) + in.small(-1, 9));
+        glEnable(target);
+        if (in.byte() % 2) glEnable(GL_AUTO_NORMAL);
+        glEvalCoord1f(in.number()), glEvalCoord2f(in.number(), in.number());
+        glEvalPoint1(in.small(-2, 10)), glEvalPoint2(in.small(-2, 10), in.small(-2, 10));
+        const GLenum query = in.byte() % 2 ? in.any_enum() : GLenum(GL_COEFF + in.small(0, 2));
+        glGetMapfv(target, query, reinterpret_cast<GLfloat*>(b->pixels));
+        glGetMapdv(target, query, reinterpret_cast<GLdouble*>(b->pixels));
+        glGetMapiv(target, query, reinterpret_cast<GLint*>(b->pixels));
         break;
       }
     }

@@ -281,6 +281,7 @@ void exec::PushAttrib(GlContext& c, GLbitfield mask) {
   r.draw_buffer = c.buffers.draw_buffer;
   r.read_buffer = c.buffers.read_buffer;
   r.accum_clear = c.buffers.accum_clear;
+  r.eval = c.eval.attribs;
   c.attrib_stack.push_back(std::move(r));
 }
 
@@ -298,6 +299,8 @@ void exec::PopAttrib(GlContext& c) {
     restore_enables(c, r, [](GLenum cap) { return cap < GL_LIGHT0 || cap >= GLenum(GL_LIGHT0 + kMaxLights); });
   }
   if (m & GL_FOG_BIT) restore_fog(c, r);
+  // GL_EVAL_BIT (table 6.20): the map enables, GL_AUTO_NORMAL and the grids.
+  if (m & GL_EVAL_BIT) c.eval.attribs = r.eval;
   if (m & GL_HINT_BIT) restore_hints(c, r);
   if (m & GL_LIGHTING_BIT) restore_lighting(c, r);
   if (m & GL_LINE_BIT) restore_line(c, r);

@@ -22,6 +22,7 @@
 #include <glm/vec4.hpp>
 
 #include "gl/src/dlist_state.hpp"
+#include "gl/src/eval_state.hpp"
 #include "gl/src/pixel_state.hpp"
 #include "gl/src/primitive.hpp"
 #include "gl/src/texformat.hpp"
@@ -362,6 +363,7 @@ struct AttribRecord {
   PixelTransfer pixel;        // pixel group (table 6.17): all but the maps, which no group holds
   GLenum draw_buffer = GL_FRONT, read_buffer = GL_FRONT;  // colour-buffer and pixel groups
   glm::vec4 accum_clear{0.0f};                             // accum-buffer group
+  EvalAttribs eval;
 };
 
 /// One glPushClientAttrib entry (GL 1.1 section 6.1.14).
@@ -402,6 +404,7 @@ struct GlContext {
   BufferState buffers;         // glDrawBuffer, glReadBuffer, the accumulation buffer
   ClientArrays arrays;
   ListState lists;
+  EvalState eval;
   std::vector<AttribRecord> attrib_stack;              // glPushAttrib
   std::vector<ClientAttribRecord> client_attrib_stack;  // glPushClientAttrib
   Primitive prim;
@@ -529,6 +532,11 @@ bool scissor_box(const GlContext& c, int& x0, int& y0, int& x1, int& y1);
 
 /// The flag behind a glEnable capability (nullptr: not accepted) and behind a client array.
 bool* capability_flag(GlContext& c, GLenum cap);
+/// The flags of the evaluator capabilities (GL_MAPn_*, GL_AUTO_NORMAL), nullptr for others
+/// (eval.cpp).
+bool* eval_capability_flag(GlContext& c, GLenum cap);
+/// The number of values of a control point of an evaluator target, 0 for another enum.
+int eval_components(GLenum target);
 bool* client_capability_flag(GlContext& c, GLenum cap);
 
 /// Applies the current colour to the material parameters glColorMaterial selects, when

@@ -233,6 +233,15 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
     case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
+    case GL_MAX_EVAL_ORDER: out = ints({kMaxEvalOrder}); return true;
+    case GL_MAP1_GRID_DOMAIN: out = make(Kind::kFloat, {c.eval.attribs.grid1_u1, c.eval.attribs.grid1_u2}); return true;
+    case GL_MAP1_GRID_SEGMENTS: out = ints({double(c.eval.attribs.grid1_un)}); return true;
+    case GL_MAP2_GRID_DOMAIN: {
+      const EvalAttribs& e = c.eval.attribs;
+      out = make(Kind::kFloat, {e.grid2_u1, e.grid2_u2, e.grid2_v1, e.grid2_v2});
+      return true;
+    }
+    case GL_MAP2_GRID_SEGMENTS: out = ints({double(c.eval.attribs.grid2_un), double(c.eval.attribs.grid2_vn)}); return true;
     case GL_LIST_BASE: out = ints({double(c.lists.base)}); return true;
     case GL_LIST_INDEX: out = ints({double(c.lists.index)}); return true;
     case GL_LIST_MODE: out = ints({double(c.lists.mode)}); return true;

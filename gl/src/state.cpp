@@ -41,7 +41,7 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_POLYGON_OFFSET_POINT: return &c.inert.offset_point;
     case GL_POLYGON_OFFSET_LINE: return &c.inert.offset_line;
     case GL_POLYGON_SMOOTH: return &c.inert.polygon_smooth;
-    default: return nullptr;
+    default: return eval_capability_flag(c, cap);
   }
 }
 
