@@ -22,6 +22,7 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
   if (mask & GL_TRANSFORM_BIT) {
     d.matrix_mode = s.matrix_mode;
     d.lighting.normalize = s.lighting.normalize, d.lighting.rescale_normal = s.lighting.rescale_normal;
+    d.prims.clip_planes = s.prims.clip_planes, d.prims.clip_enabled = s.prims.clip_enabled;
   }
   if (mask & GL_ENABLE_BIT) {
     d.lighting.enabled = s.lighting.enabled, d.lighting.color_material = s.lighting.color_material;
@@ -30,8 +31,20 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
     b.polygon_offset_fill = a.polygon_offset_fill, b.dither = a.dither;
     d.textures.enabled_1d = s.textures.enabled_1d, d.textures.enabled_2d = s.textures.enabled_2d;
     for (std::size_t i = 0; i < 4; ++i) d.textures.gen[i].enabled = s.textures.gen[i].enabled;
-    d.inert = s.inert;
+    PrimState& e = d.prims;
+    const PrimState& f = s.prims;
+    e.point_smooth = f.point_smooth, e.line_smooth = f.line_smooth, e.line_stipple = f.line_stipple;
+    e.offset_point = f.offset_point, e.offset_line = f.offset_line,
+    e.polygon_smooth = f.polygon_smooth;
+    e.clip_enabled = f.clip_enabled;
   }
+  if (mask & GL_LINE_BIT) {
+    d.prims.line_width = s.prims.line_width, d.prims.line_smooth = s.prims.line_smooth;
+    d.prims.line_stipple = s.prims.line_stipple, d.prims.stipple_pattern = s.prims.stipple_pattern;
+    d.prims.stipple_repeat = s.prims.stipple_repeat;
+  }
+  if (mask & GL_POINT_BIT)
+    d.prims.point_size = s.prims.point_size, d.prims.point_smooth = s.prims.point_smooth;
   if (mask & GL_COLOR_BUFFER_BIT) {
     b.blend = a.blend, b.blend_src = a.blend_src, b.blend_dst = a.blend_dst;
     b.color_mask = a.color_mask, b.clear_color = a.clear_color, b.dither = a.dither;
@@ -49,6 +62,9 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
   if (mask & GL_POLYGON_BIT) {
     b.cull = a.cull, b.cull_mode = a.cull_mode, b.front_face = a.front_face;
     b.polygon_offset_fill = a.polygon_offset_fill, b.offset_factor = a.offset_factor, b.offset_units = a.offset_units;
+    d.prims.front_mode = s.prims.front_mode, d.prims.back_mode = s.prims.back_mode;
+    d.prims.offset_point = s.prims.offset_point, d.prims.offset_line = s.prims.offset_line;
+    d.prims.polygon_smooth = s.prims.polygon_smooth;
   }
   if (mask & GL_HINT_BIT) d.hints = s.hints;
   if (mask & GL_TEXTURE_BIT) {

@@ -203,7 +203,7 @@ void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei 
 // and normals converted as `norm` says (as the command being recorded converts them).
 void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, const auto& index_of) {
   const ClientArrays& a = c.arrays;
-  std::vector<float> normals, colors, texcoords, positions;
+  std::vector<float> normals, colors, texcoords, positions, edges;
   auto put = [](std::vector<float>& out, const glm::vec4& v, int n) {
     for (int k = 0; k < n; ++k) out.push_back(v[k]);
   };
@@ -213,12 +213,14 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
     if (usable(a.color)) put(colors, fetch(a.color, i, glm::vec4(0, 0, 0, 1), norm), 4);
     if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
     if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
+    if (usable(a.edge_flag)) edges.push_back(component(a.edge_flag, i, 0, Norm::kDirect));
   }
   w.scalar(std::uint64_t(count));
   w.array(usable(a.normal) ? normals.data() : nullptr, normals.size());
   w.array(usable(a.color) ? colors.data() : nullptr, colors.size());
   w.array(usable(a.texcoord) ? texcoords.data() : nullptr, texcoords.size());
   w.array(usable(a.vertex) ? positions.data() : nullptr, positions.size());
+  w.array(usable(a.edge_flag) ? edges.data() : nullptr, edges.size());
 }
 
 // A draw in a display list: its mode and elements. Drawn only if the vertex array is enabled,
@@ -242,6 +244,7 @@ void specify(GlContext& c, const RecordedElements& e, std::uint64_t k) {
     const float* t = &e.texcoords[4 * k];
     c.current.texcoord = glm::vec4(t[0], t[1], t[2], t[3]);
   }
+  if (e.edges) c.current.edge_flag = e.edges[k];
   if (e.positions && c.prim.active) {
     const float* p = &e.positions[4 * k];
     emit_vertex(c, glm::vec4(p[0], p[1], p[2], p[3]));

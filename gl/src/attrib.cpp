@@ -70,6 +70,7 @@ void save_enables(GlContext& c, AttribRecord& r) {
   };
   for (GLenum cap : kCapabilities) save(cap);
   for (int i = 0; i < kMaxLights; ++i) save(GLenum(GL_LIGHT0 + i));
+  for (int i = 6; i < kMaxClipPlanes; ++i) save(GLenum(GL_CLIP_PLANE0 + i));  // beyond GL 1.1's 6
 }
 
 // Through glEnable / glDisable, for what they do besides the flag (GL_COLOR_MATERIAL takes
@@ -211,21 +212,31 @@ void restore_lighting(GlContext& c, const AttribRecord& r) {
 }
 
 void restore_line(GlContext& c, const AttribRecord& r) {
-  c.inert.line_smooth = r.inert.line_smooth;
-  c.inert.line_stipple = r.inert.line_stipple;
+  PrimState& d = c.prims;
+  const PrimState& s = r.prims;
+  d.line_smooth = s.line_smooth;
+  d.line_stipple = s.line_stipple;
+  d.stipple_repeat = s.stipple_repeat;
+  d.stipple_pattern = s.stipple_pattern;
+  d.line_width = s.line_width;
 }
 
-void restore_point(GlContext& c, const AttribRecord& r) { c.inert.point_smooth = r.inert.point_smooth; }
+void restore_point(GlContext& c, const AttribRecord& r) {
+  c.prims.point_size = r.prims.point_size;
+  c.prims.point_smooth = r.prims.point_smooth;
+}
 
 void restore_polygon(GlContext& c, const AttribRecord& r) {
   c.raster.cull_mode = r.raster.cull_mode;
   c.raster.front_face = r.raster.front_face;
   c.raster.offset_factor = r.raster.offset_factor;
   c.raster.offset_units = r.raster.offset_units;
-  c.inert.polygon_smooth = r.inert.polygon_smooth;
+  c.prims.front_mode = r.prims.front_mode;
+  c.prims.back_mode = r.prims.back_mode;
+  c.prims.polygon_smooth = r.prims.polygon_smooth;
   c.raster.cull = r.raster.cull;
-  c.inert.offset_point = r.inert.offset_point;
-  c.inert.offset_line = r.inert.offset_line;
+  c.prims.offset_point = r.prims.offset_point;
+  c.prims.offset_line = r.prims.offset_line;
   c.raster.polygon_offset_fill = r.raster.polygon_offset_fill;
   c.raster.polygon_stipple = r.raster.polygon_stipple;  // the enable (table 6.12)
 }
@@ -246,6 +257,8 @@ void restore_stencil(GlContext& c, const AttribRecord& r) {
 
 void restore_transform(GlContext& c, const AttribRecord& r) {
   c.matrix_mode = r.matrix_mode;
+  c.prims.clip_planes = r.prims.clip_planes;  // in eye space, as they were pushed
+  c.prims.clip_enabled = r.prims.clip_enabled;
   c.lighting.normalize = r.lighting.normalize;
   c.lighting.rescale_normal = r.lighting.rescale_normal;
 }
@@ -267,7 +280,7 @@ void exec::PushAttrib(GlContext& c, GLbitfield mask) {
   r.current = c.current;
   r.lighting = c.lighting;
   r.raster = c.raster;
-  r.inert = c.inert;
+  r.prims = c.prims;
   r.textures = c.textures;
   r.fog = c.fog;
   save_enables(c, r);

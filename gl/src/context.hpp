@@ -137,12 +137,25 @@ struct FogSettings {
   float index = 0.0f;  // GL_FOG_INDEX: stored and reported (colour-index mode only)
 };
 
-/// Capabilities that are accepted and reported but change nothing shadelab draws (they only
-/// affect points and lines, which are not rasterized).
-struct InertCaps {
-  bool point_smooth = false, line_smooth = false, line_stipple = false;
+// Mesa's limits for points and lines (glGet GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE and
+// their granularity) and its number of user clip planes.
+inline constexpr float kMaxPointSize = 255.0f, kMaxLineWidth = 255.0f, kSizeGranularity = 0.1f;
+inline constexpr int kMaxClipPlanes = 8;
+
+/// Points, lines, the polygon modes and the user clip planes (GL 1.1 sections 2.11, 3.3-3.5).
+struct PrimState {
+  GLfloat point_size = 1.0f;
+  bool point_smooth = false;
+  GLfloat line_width = 1.0f;
+  bool line_smooth = false, line_stipple = false;
+  GLushort stipple_pattern = 0xffff;
+  GLint stipple_repeat = 1;
+  GLenum front_mode = GL_FILL, back_mode = GL_FILL;
   bool offset_point = false, offset_line = false;
   bool polygon_smooth = false;  // llvmpipe draws polygons unsmoothed whatever it says
+  std::array<glm::vec4, kMaxClipPlanes> clip_planes{};  // eye space, as glGetClipPlane returns them
+  std::array<bool, kMaxClipPlanes> clip_enabled{};
+  bool unfilled() const { return front_mode != GL_FILL || back_mode != GL_FILL; }
 };
 
 /// One level of a texture as glTexImage specified it (GL 1.1 section 3.8, table 6.16): what
@@ -253,6 +266,12 @@ struct Primitive {
   // Drawn by glDrawElements: llvmpipe then splits quads from their second vertex
   // (docs/gl-conformance.md).
   bool from_elements = false;
+  bool continued = false;  // a part of the primitive was drawn before (line stipple, loops)
+  // Edge flags of the vertices (section 2.6.2), one per vertex while the polygon modes draw
+  // edges (polygon primitives with a face in GL_LINE or GL_POINT mode), else empty.
+  std::vector<std::uint8_t> edges;
+  bool edge_flags = false;
+  std::uint32_t stipple_counter = 0;  // the line stipple's position across parts
   // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
   // at glBegin. A material change inside the primitive lights the vertices so far and ends
   // the deferral (settle_lighting).
@@ -295,6 +314,11 @@ struct ImmediateScratch {
   detail::ScratchVector<glm::vec4> texcoords;
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
+  std::vector<std::uint8_t> triangle_flags;  // polygon modes: per triangle, its edges
+  std::vector<UnfilledTriangle> unfilled;
+  std::vector<PrimitiveLine> line_pieces;
+  std::vector<LineSegment> lines;
+  std::vector<std::uint32_t> points;
   std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite
 };
 
@@ -345,7 +369,7 @@ struct AttribRecord {
   CurrentAttribs current;
   LightingState lighting;
   RasterState raster;
-  InertCaps inert;
+  PrimState prims;
   FogSettings fog;
   TextureState textures;  // environment; the bindings are restored through exec::BindTexture
   std::vector<std::pair<GLenum, bool>> enables;  // every accepted capability
@@ -395,7 +419,7 @@ struct GlContext {
   LightingState lighting;
   CurrentAttribs current;
   RasterState raster;
-  InertCaps inert;
+  PrimState prims;
   FogSettings fog;
   TextureState textures;
   PixelStore pack, unpack;

@@ -111,13 +111,18 @@ class ListReader {
 
 /// The elements of a dereferenced vertex-array command (ArrayElements, ArrayDraw: gl/src/
 /// arrays.cpp writes them): per element, 3 floats of normal, 4 of colour, 4 of texture
-/// coordinates and 4 of position, each array null when its client array was disabled.
+/// coordinates, 4 of position and 1 of edge flag, each array null when its client array was
+/// disabled.
 struct RecordedElements {
   std::uint64_t count;
-  const float *normals, *colors, *texcoords, *positions;
+  const float *normals, *colors, *texcoords, *positions, *edges;
   explicit RecordedElements(ListReader& r)
-      : count(r.scalar<std::uint64_t>()), normals(r.array<float>()), colors(r.array<float>()),
-        texcoords(r.array<float>()), positions(r.array<float>()) {}
+      : count(r.scalar<std::uint64_t>()),
+        normals(r.array<float>()),
+        colors(r.array<float>()),
+        texcoords(r.array<float>()),
+        positions(r.array<float>()),
+        edges(r.array<float>()) {}
 };
 
 /// While a command is compiled: runs its saver (out of memory becomes GL_OUT_OF_MEMORY) and

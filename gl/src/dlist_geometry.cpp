@@ -127,6 +127,7 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
     }
     if (op == Opcode::kArrayElements) {
       const RecordedElements e(r);
+      if (e.edges) return 0;  // edge flags per vertex: a mesh keeps none (replayed as recorded)
       for (std::uint64_t k = 0; k < e.count; ++k) {
         if (e.normals && !s.set(AttributeKind::kNormal, glm::vec4(glm::make_vec3(&e.normals[3 * k]), 0.0f))) return 0;
         if (e.colors && !s.set(AttributeKind::kColor, glm::make_vec4(&e.colors[4 * k]))) return 0;
@@ -144,11 +145,13 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
   return 0;
 }
 
-// The mesh of an ArrayDraw command (the reader after its opcode).
-void array_draw_mesh(ListReader& r, ListMesh& mesh) {
+// The mesh of an ArrayDraw command (the reader after its opcode); false when its elements
+// carry edge flags, which a mesh does not keep (the command is then replayed as recorded).
+bool array_draw_mesh(ListReader& r, ListMesh& mesh) {
   mesh.mode = r.scalar<GLenum>();
   mesh.array_draw = true;
   const RecordedElements e(r);
+  if (e.edges) return false;
   MeshBuilder b(mesh);
   b.keep(e.normals != nullptr, e.colors != nullptr, e.texcoords != nullptr);
   for (std::uint64_t k = 0; k < e.count; ++k) {
@@ -156,6 +159,7 @@ void array_draw_mesh(ListReader& r, ListMesh& mesh) {
              e.colors ? glm::make_vec4(&e.colors[4 * k]) : glm::vec4(0.0f),
              e.texcoords ? glm::make_vec4(&e.texcoords[4 * k]) : glm::vec4(0.0f));
   }
+  return true;
 }
 
 // Vertex v's attributes become current, then it is specified.
@@ -240,8 +244,7 @@ void compile_geometry(DisplayList& list) {
     } else if (op == Opcode::kArrayDraw) {
       r.seek(start);
       r.next();
-      array_draw_mesh(r, mesh);
-      after = end;
+      if (array_draw_mesh(r, mesh)) after = end;
     }
     if (after == 0) {
       code.insert(code.end(), list.code.begin() + std::ptrdiff_t(start), list.code.begin() + std::ptrdiff_t(end));

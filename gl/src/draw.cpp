@@ -77,6 +77,19 @@ BlendFactor blend_factor(GLenum f) {
   }
 }
 
+PolygonMode polygon_mode(GLenum mode) {
+  return mode == GL_LINE    ? PolygonMode::kLine
+         : mode == GL_POINT ? PolygonMode::kPoint
+                            : PolygonMode::kFill;
+}
+
+// A width or size as Mesa's state tracker hands it to llvmpipe: clamped to [least, the
+// maximum] (line widths from 1, point sizes from 0: glLineWidth and glPointSize keep any
+// positive value, and a NaN, for glGet; a NaN draws as 1 here).
+float raster_size(float v, float least, float max) {
+  return v == v ? std::clamp(v, least, max) : 1.0f;
+}
+
 // The core's per-fragment state from GL's. Without a depth (stencil) buffer the depth
 // (stencil) test behaves as if disabled (GL 1.1 sections 4.1.5, 4.1.6).
 FragmentState fragment_state(const GlContext& c) {
@@ -107,6 +120,19 @@ FragmentState fragment_state(const GlContext& c) {
   f.logic_op = {r.color_logic_op, LogicOp(r.logic_op - GL_CLEAR)};
   f.stipple.enabled = r.polygon_stipple;
   if (r.polygon_stipple) f.stipple.rows = r.stipple;
+  const PrimState& p = c.prims;
+  f.offset_line = p.offset_line;
+  f.offset_point = p.offset_point;
+  f.front_mode = polygon_mode(p.front_mode);
+  f.back_mode = polygon_mode(p.back_mode);
+  f.line = {raster_size(p.line_width, 1.0f, kMaxLineWidth), p.line_smooth,
+            p.line_stipple && p.stipple_pattern != 0xffff, p.stipple_pattern,
+            GLushort(p.stipple_repeat)};
+  f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
+  for (int i = 0; i < kMaxClipPlanes; ++i) {
+    f.clip.eye[std::size_t(i)] = p.clip_planes[std::size_t(i)];
+    if (p.clip_enabled[std::size_t(i)]) f.clip.enabled |= std::uint8_t(1u << i);
+  }
   return f;
 }
 
@@ -249,9 +275,10 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch&
   return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord)};
 }
 
-// Marks the window-space bounds of the batch's vertices (the whole viewport when a vertex
-// is behind the eye, as clipping may then reach any part of it).
-void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::vec4> eye) {
+// Marks the window-space bounds of the batch's vertices, widened by `margin` pixels (the whole
+// viewport when a vertex is behind the eye, as clipping may then reach any part of it).
+void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::vec4> eye,
+                int margin) {
   const Viewport& vp = c.raster.viewport;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
   for (const glm::vec4& e : eye) {
@@ -267,8 +294,17 @@ void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::
   x0 = std::max(x0, double(vp.x)), y0 = std::max(y0, double(vp.y));
   x1 = std::min(x1, double(vp.x) + vp.width), y1 = std::min(y1, double(vp.y) + vp.height);
   if (x0 > x1 || y0 > y1) return;
-  mark_dirty(c, int(std::floor(x0)) - 1, int(std::floor(y0)) - 1, int(std::ceil(x1)) + 1,
-             int(std::ceil(y1)) + 1);
+  mark_dirty(c, int(std::floor(x0)) - margin, int(std::floor(y0)) - margin,
+             int(std::ceil(x1)) + margin, int(std::ceil(y1)) + margin);
+}
+
+// How far beyond its vertices a primitive may draw, in pixels: half a wide line or point
+// (a smooth one's rim besides), and one for rounding.
+int prim_margin(const GlContext& c) {
+  const PrimState& p = c.prims;  // sizes as drawn: clamped, a NaN as 1 (never cast unbounded)
+  const float widest = std::max(raster_size(p.point_size, 0.0f, kMaxPointSize),
+                                raster_size(p.line_width, 1.0f, kMaxLineWidth));
+  return 2 + int(std::ceil(widest / 2.0f));
 }
 
 // Whether every entry is finite and at most 1e18 in magnitude: products of two such numbers,
@@ -303,11 +339,54 @@ bool inside_view_volume(const glm::mat4& projection, const glm::vec4& eye) {
   return -v.w <= v.x && v.x <= v.w && -v.w <= v.y && v.y <= v.w && -v.w <= v.z && v.z <= v.w;
 }
 
-// Draws the first `count` vertices of the primitive.
-void draw_vertices(GlContext& c, std::uint32_t count) {
+// The fewest vertices of `mode` that draw something.
+std::uint32_t min_vertices(GLenum mode) {
+  return mode == GL_POINTS ? 1 : is_line_mode(mode) ? 2 : 3;
+}
+
+// The polygon primitive's triangles with their TriangleFlag bits, as Mesa's draw pipeline
+// decomposes it when some face is drawn as lines or points: each polygon edge flagged unless
+// the edge flag of its first vertex is off (GL 1.1 section 2.6.2: strips, fans and quad strips
+// ignore edge flags).
+void unfilled_triangles(GlContext& c, std::uint32_t count,
+                        const std::vector<std::uint8_t>& finite) {
   Primitive& p = c.prim;
-  if (c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK) return;  // every polygon culled
-  if (count < 3) return;
+  ImmediateScratch& s = c.immediate_scratch;
+  s.unfilled.clear();
+  s.triangle_flags.clear();
+  decompose_unfilled(p.mode, count, p.odd_strip_start, s.unfilled);
+  const bool flagged = p.mode == GL_TRIANGLES || p.mode == GL_QUADS || p.mode == GL_POLYGON;
+  for (const UnfilledTriangle& t : s.unfilled) {
+    if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
+    std::uint8_t flags = t.flags;
+    for (int k = 0; k < 3 && flagged && !p.edges.empty(); ++k) {
+      if (!p.edges[t.v[k]]) flags &= std::uint8_t(~(1u << k));  // kTriangleEdge01, 12, 20
+    }
+    s.triangles.push_back({t.v[0], t.v[1], t.v[2]});
+    s.triangle_flags.push_back(flags);
+  }
+}
+
+void line_segments(GlContext& c, std::uint32_t count, bool last_part,
+                   const std::vector<std::uint8_t>& finite) {
+  Primitive& p = c.prim;
+  ImmediateScratch& s = c.immediate_scratch;
+  s.line_pieces.clear();
+  s.lines.clear();
+  decompose_lines(p.mode, count, p.continued, last_part, s.line_pieces);
+  for (const PrimitiveLine& l : s.line_pieces) {
+    if (!finite[l.v[0]] || !finite[l.v[1]]) continue;
+    s.lines.push_back({{l.v[0], l.v[1]}, l.restart ? LineSegment::kRestartStipple : 0u});
+  }
+}
+
+// Draws the first `count` vertices of the primitive (`last_part`: the rest of it, at glEnd).
+void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
+  Primitive& p = c.prim;
+  const bool polygons = is_polygon_mode(p.mode);
+  if (polygons && c.raster.cull && c.raster.cull_mode == GL_FRONT_AND_BACK)
+    return;  // every polygon culled
+  if (count < min_vertices(p.mode)) return;
   const glm::mat4& projection = c.projection.top();
   make_pipeline(c);
   // Per vertex: the draw's arrays, whether its clip coordinates are finite and, for quads,
@@ -321,7 +400,8 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   std::vector<std::uint8_t>& finite = c.immediate_scratch.finite;
   finite.resize(count);
   const bool small_projection = bounded(&projection[0][0], 16);
-  const bool quads = p.mode == GL_QUADS;
+  const bool unfilled = polygons && c.prims.unfilled();
+  const bool quads = p.mode == GL_QUADS && !unfilled;
   const bool normals = p.deferred_lighting && !p.object_normals, colors = !p.deferred_lighting;
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
@@ -331,17 +411,36 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
   }
-  std::vector<PrimitiveTriangle>& tris = c.immediate_scratch.pieces;
-  tris.clear();
-  const bool second = outside || p.in_list || p.from_elements;
-  decompose(p.mode, count, p.odd_strip_start, second ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
-  if (tris.empty()) return;
   bool flat = c.lighting.shade_model == GL_FLAT;
-  for (const PrimitiveTriangle& t : tris) {
-    if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
-    batch.s.triangles.push_back(flat ? flat_triangle(t, p, batch) : Triangle{t.v[0], t.v[1], t.v[2]});
+  VertexInput in;
+  ImmediateScratch& s = c.immediate_scratch;
+  if (p.mode == GL_POINTS) {
+    s.points.clear();
+    for (std::uint32_t i = 0; i < count; ++i) {
+      if (finite[i]) s.points.push_back(i);
+    }
+    in.points = s.points;
+  } else if (!polygons) {
+    line_segments(c, count, last_part, finite);
+    in.lines = s.lines;
+  } else if (unfilled) {
+    unfilled_triangles(c, count, finite);
+    in.triangles = s.triangles;
+    in.triangle_flags = s.triangle_flags;
+  } else {
+    std::vector<PrimitiveTriangle>& tris = s.pieces;
+    tris.clear();
+    const bool second = outside || p.in_list || p.from_elements;
+    decompose(p.mode, count, p.odd_strip_start,
+              second ? QuadSplit::kFromSecond : QuadSplit::kFromFirst, tris);
+    for (const PrimitiveTriangle& t : tris) {
+      if (!finite[t.v[0]] || !finite[t.v[1]] || !finite[t.v[2]]) continue;  // NaN or infinite
+      batch.s.triangles.push_back(flat ? flat_triangle(t, p, batch)
+                                       : Triangle{t.v[0], t.v[1], t.v[2]});
+    }
+    in.triangles = batch.s.triangles;
   }
-  if (batch.s.triangles.empty()) return;
+  if (in.triangles.empty() && in.lines.empty() && in.points.empty()) return;
 
   ShadeState shade;
   shade.lighting = false;  // colours lit per vertex above, unless deferred below
@@ -351,7 +450,6 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
   shade.fog = fog_state(c);
   const LightingState& l = c.lighting;
   bool lit = l.enabled && !p.deferred_lighting;  // colours lit per vertex above
-  VertexInput in;
   in.positions = batch.s.positions;
   if (p.deferred_lighting) {  // lit by the pipeline with the primitive's one material
     shade.lighting = true;
@@ -369,12 +467,13 @@ void draw_vertices(GlContext& c, std::uint32_t count) {
     if (c.lighting.model.two_side) in.back_secondary_colors = batch.s.back_secondary;
   }
   if (shade.texture) in.texcoords = batch.s.texcoords;
-  in.triangles = batch.s.triangles;
+  in.stipple_counter = &p.stipple_counter;
   make_pipeline(c);
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
   if (c.pipeline) mark_drawn(c);
-  else mark_batch(c, projection, batch.s.positions);
+  else
+    mark_batch(c, projection, batch.s.positions, prim_margin(c));
 }
 
 // Keeps the first element (with `first`) and the `last` last ones, in place.
@@ -390,12 +489,14 @@ void keep_ends(std::vector<T>& v, bool first, std::uint32_t last) {
 void flush_part(GlContext& c) {
   Primitive& p = c.prim;
   PartialFlush f = partial_flush(p.mode, std::uint32_t(p.vertices.size()));
-  if (f.drawable < 3) return;
-  draw_vertices(c, f.drawable);
+  if (f.drawable < min_vertices(p.mode)) return;
+  draw_vertices(c, f.drawable, false);
   if (p.mode == GL_TRIANGLE_STRIP && ((f.drawable - 2) & 1u)) p.odd_strip_start = !p.odd_strip_start;
+  p.continued = true;
   keep_ends(p.vertices, f.keep_first, f.keep_last);
   keep_ends(p.colors, f.keep_first, f.keep_last);
   keep_ends(p.texcoords, f.keep_first, f.keep_last);
+  keep_ends(p.edges, f.keep_first, f.keep_last);
 }
 
 // Rotates a triangle so that its provoking vertex comes last (the core's flat convention);
@@ -429,7 +530,8 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
   // material changes the material per vertex: those go vertex by vertex.
   bool flat_ok = mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN;
-  if (!is_polygon_mode(mode) || (flat && !flat_ok) || (l.enabled && l.color_material && per_vertex_color)) {
+  if (!is_polygon_mode(mode) || c.prims.unfilled() || (flat && !flat_ok) ||
+      (l.enabled && l.color_material && per_vertex_color)) {
     return false;
   }
   ArrayScratch& m = c.array_scratch;
@@ -563,6 +665,10 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.odd_strip_start = false;
   p.in_list = c.lists.depth > 0;
   p.from_elements = false;
+  p.continued = false;
+  p.stipple_counter = 0;
+  p.edge_flags = is_polygon_mode(mode) && c.prims.unfilled();
+  p.edges.clear();
   p.modelview = c.modelview.top();
   glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
   p.normal_matrix = glm::transpose(inv);
@@ -597,7 +703,6 @@ void settle_lighting(GlContext& c) {
 
 void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   Primitive& p = c.prim;
-  if (!is_polygon_mode(p.mode)) return;  // points and lines are accepted but not drawn
   const glm::vec4 eye = transform(p.modelview, object_position);
   // The pipeline lights at xyz, this path at xyz / w: a vertex with w != 1 ends the deferral.
   if (p.deferred_lighting && eye.w != 1.0f) settle_lighting(c);
@@ -610,12 +715,14 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   }
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v, p.colors.emplace_back());
+  if (p.edge_flags) p.edges.push_back(c.current.edge_flag != 0.0f);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
 }
 
 void end_primitive(GlContext& c) {
   Primitive& p = c.prim;
-  if (p.vertices.size() >= 3) draw_vertices(c, std::uint32_t(p.vertices.size()));
+  if (p.vertices.size() >= min_vertices(p.mode))
+    draw_vertices(c, std::uint32_t(p.vertices.size()), true);
   p.vertices.clear();
   p.colors.clear();
   p.texcoords.clear();

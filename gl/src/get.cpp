@@ -249,11 +249,58 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
   }
 }
 
+// Points, lines, polygon modes, edge flags and clip planes (GL 1.1 tables 6.10-6.12), with
+// Mesa's limits.
+bool query_prims(const GlContext& c, GLenum pname, Values& out) {
+  const PrimState& p = c.prims;
+  switch (pname) {
+    case GL_POINT_SIZE:
+      out = make(Kind::kFloat, {p.point_size});
+      return true;
+    case GL_POINT_SIZE_RANGE:
+      out = make(Kind::kFloat, {1.0, kMaxPointSize});
+      return true;
+    case GL_POINT_SIZE_GRANULARITY:
+      out = make(Kind::kFloat, {kSizeGranularity});
+      return true;
+    case GL_LINE_WIDTH:
+      out = make(Kind::kFloat, {p.line_width});
+      return true;
+    case GL_LINE_WIDTH_RANGE:
+      out = make(Kind::kFloat, {1.0, kMaxLineWidth});
+      return true;
+    case GL_LINE_WIDTH_GRANULARITY:
+      out = make(Kind::kFloat, {kSizeGranularity});
+      return true;
+    case 0x846D:  // GL_ALIASED_POINT_SIZE_RANGE (GL 1.2)
+      out = make(Kind::kFloat, {1.0, kMaxPointSize});
+      return true;
+    case 0x846E:  // GL_ALIASED_LINE_WIDTH_RANGE (GL 1.2)
+      out = make(Kind::kFloat, {1.0, kMaxLineWidth});
+      return true;
+    case GL_LINE_STIPPLE_PATTERN:
+      out = ints({double(p.stipple_pattern)});
+      return true;
+    case GL_LINE_STIPPLE_REPEAT:
+      out = ints({double(p.stipple_repeat)});
+      return true;
+    case GL_POLYGON_MODE:
+      out = ints({double(p.front_mode), double(p.back_mode)});
+      return true;
+    case GL_MAX_CLIP_PLANES:
+      out = ints({kMaxClipPlanes});
+      return true;
+    default:
+      return false;
+  }
+}
+
 bool query(GlContext& c, GLenum pname, Values& out) {
   if (bool* f = capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
   if (bool* f = client_capability_flag(c, pname)) return out = make(Kind::kBool, {double(*f)}), true;
   return query_transform_lighting(c, pname, out) || query_raster(c, pname, out) ||
-         query_limits(c, pname, out) || query_client(c, pname, out) || query_pixels(c, pname, out);
+         query_prims(c, pname, out) || query_limits(c, pname, out) || query_client(c, pname, out) ||
+         query_pixels(c, pname, out);
 }
 
 template <class T>

@@ -1,5 +1,6 @@
 // Triangle decomposition of GL_TRIANGLES .. GL_POLYGON (GL 1.1 section 2.6.1) with provoking
-// vertices (section 2.13.7), and how much of a long primitive can be drawn before glEnd.
+// vertices (section 2.13.7), Mesa's decomposition with edge flags for the polygon modes
+// (section 3.5.4), line segments, and how much of a long primitive can be drawn before glEnd.
 #include "gl/src/primitive.hpp"
 
 namespace shadelab::gl {
@@ -59,6 +60,60 @@ void decompose(GLenum mode, std::uint32_t n, bool odd_strip_start, QuadSplit qua
   }
 }
 
+void decompose_lines(GLenum mode, std::uint32_t n, bool continued, bool close,
+                     std::vector<PrimitiveLine>& out) {
+  if (mode == GL_LINES) {
+    for (std::uint32_t i = 0; i + 2 <= n; i += 2) out.push_back({{i, i + 1}, true});
+    return;
+  }
+  const std::uint32_t first = mode == GL_LINE_LOOP && continued ? 1 : 0;
+  for (std::uint32_t i = first; i + 2 <= n; ++i) out.push_back({{i, i + 1}, i == 0 && !continued});
+  if (mode == GL_LINE_LOOP && close && n >= 2) out.push_back({{n - 1, 0}, false});
+}
+
+namespace {
+
+constexpr std::uint8_t kAll = 7, kE01 = 1, kE12 = 2, kE20 = 4, kRestart = 8;
+
+void add(std::vector<UnfilledTriangle>& out, std::uint32_t a, std::uint32_t b, std::uint32_t c,
+         std::uint8_t flags) {
+  out.push_back({{a, b, c}, flags});
+}
+
+}  // namespace
+
+void decompose_unfilled(GLenum mode, std::uint32_t n, bool odd_strip_start,
+                        std::vector<UnfilledTriangle>& out) {
+  switch (mode) {
+    case GL_QUADS:
+      for (std::uint32_t i = 0; i + 4 <= n; i += 4) {
+        add(out, i, i + 1, i + 3, kRestart | kE01 | kE20);
+        add(out, i + 1, i + 2, i + 3, kE01 | kE12);
+      }
+      break;
+    case GL_QUAD_STRIP:
+      for (std::uint32_t i = 0; i + 4 <= n; i += 2) {
+        add(out, i + 2, i, i + 3, kRestart | kE01 | kE20);
+        add(out, i, i + 1, i + 3, kE01 | kE12);
+      }
+      break;
+    case GL_POLYGON:
+      for (std::uint32_t i = 0; i + 3 <= n; ++i) {
+        std::uint8_t flags = kE01;
+        if (i == 0) flags |= kRestart | kE20;
+        if (i + 3 == n) flags |= kE12;
+        add(out, i + 1, i + 2, 0, flags);
+      }
+      break;
+    default: {  // triangles, strips and fans: every edge, the stipple restarting each time
+      std::vector<PrimitiveTriangle> tris;
+      decompose(mode, n, odd_strip_start, QuadSplit::kFromFirst, tris);
+      for (const PrimitiveTriangle& t : tris) add(out, t.v[0], t.v[1], t.v[2], kRestart | kAll);
+      break;
+    }
+  }
+}
+
 PartialFlush partial_flush(GLenum mode, std::uint32_t n) {
   switch (mode) {
     case GL_TRIANGLES: return {n - n % 3, false, n % 3};
@@ -69,7 +124,14 @@ PartialFlush partial_flush(GLenum mode, std::uint32_t n) {
       return n % 2 == 0 ? PartialFlush{n, false, 2} : PartialFlush{n - 1, false, 3};
     case GL_TRIANGLE_FAN:
     case GL_POLYGON: return n >= 3 ? PartialFlush{n, true, 1} : PartialFlush{};
-    default: return {n, false, 0};  // points and lines: nothing to keep
+    case GL_LINES:
+      return {n - n % 2, false, n % 2};
+    case GL_LINE_STRIP:
+      return n >= 2 ? PartialFlush{n, false, 1} : PartialFlush{};
+    case GL_LINE_LOOP:
+      return n >= 2 ? PartialFlush{n, true, 1} : PartialFlush{};
+    default:
+      return {n, false, 0};  // points: nothing to keep
   }
 }
 

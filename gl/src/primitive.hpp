@@ -1,6 +1,7 @@
-// How OpenGL's polygon primitives fall apart into triangles (GL 1.1 section 2.6.1): which
+// How OpenGL's primitives fall apart into triangles and segments (GL 1.1 section 2.6.1): which
 // vertices form each triangle, in an order that keeps the primitive's winding, and which
-// vertex is the provoking one (its colour is the flat-shaded colour, section 2.13.7).
+// vertex is the provoking one (its colour is the flat-shaded colour, section 2.13.7); which
+// edges of each triangle belong to the polygon (section 3.5.4's polygon modes).
 // Pure index arithmetic: no state, no drawing.
 #pragma once
 
@@ -34,6 +35,42 @@ enum class QuadSplit { kFromFirst, kFromSecond };
 /// first triangle of a triangle strip is an odd one (a strip continued after a partial flush).
 void decompose(GLenum mode, std::uint32_t count, bool odd_strip_start, QuadSplit quad_split,
                std::vector<PrimitiveTriangle>& out);
+
+/// GL_LINES, GL_LINE_LOOP and GL_LINE_STRIP.
+inline bool is_line_mode(GLenum mode) {
+  return mode == GL_LINES || mode == GL_LINE_LOOP || mode == GL_LINE_STRIP;
+}
+
+/// One segment of a line primitive: its vertices (the second provokes) and whether the line
+/// stipple starts again with it (each GL_LINES segment, the first of a strip or loop).
+struct PrimitiveLine {
+  std::uint32_t v[2];
+  bool restart;
+};
+
+/// Appends the segments of `count` vertices of GL_LINES, GL_LINE_STRIP or GL_LINE_LOOP.
+/// `continued`: the vertices continue a strip or loop drawn in part before: no restart, and a
+/// loop's vertex 0 (its first, kept for closing it) is not part of the strip; `close`: a
+/// loop's closing segment, from its last vertex to vertex 0, is added.
+void decompose_lines(GLenum mode, std::uint32_t count, bool continued, bool close,
+                     std::vector<PrimitiveLine>& out);
+
+/// A triangle of a polygon primitive drawn with some face in GL_LINE or GL_POINT mode, in the
+/// vertex order Mesa's draw pipeline gives it (which decides the order and direction its edges
+/// are drawn in): edges are TriangleFlag bits (kEdge01 for v[0] to v[1], ...), set for the
+/// polygon's own edges; `restart` starts the line stipple again (every triangle of GL_TRIANGLES
+/// and the strips and fans, the first of each quad and of a polygon). The last vertex
+/// provokes.
+struct UnfilledTriangle {
+  std::uint32_t v[3];
+  std::uint8_t flags;
+};
+
+/// Appends the triangles of `count` vertices of a polygon mode, decomposed as Mesa's draw
+/// pipeline does: quads (a, b, d) and (b, c, d), quad-strip quads (c, a, d) and (a, b, d),
+/// polygons (v[i+1], v[i+2], v[0]), strips and fans as decompose().
+void decompose_unfilled(GLenum mode, std::uint32_t count, bool odd_strip_start,
+                        std::vector<UnfilledTriangle>& out);
 
 /// When a long primitive is drawn before glEnd: how many leading vertices `count` may be
 /// drawn now (0: none yet) and which of them the rest of the primitive still needs

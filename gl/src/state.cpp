@@ -8,10 +8,11 @@
 namespace shadelab::gl {
 
 // The flag behind an enable capability, or nullptr for one shadelab does not accept.
-// Capabilities that change images shadelab cannot draw yet (clip planes) are rejected with
-// GL_INVALID_ENUM.
+// Capabilities shadelab does not know are rejected with GL_INVALID_ENUM.
 bool* capability_flag(GlContext& c, GLenum cap) {
   if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + kMaxLights) return &c.lighting.lights[cap - GL_LIGHT0].enabled;
+  if (cap >= GL_CLIP_PLANE0 && cap < GL_CLIP_PLANE0 + kMaxClipPlanes)
+    return &c.prims.clip_enabled[cap - GL_CLIP_PLANE0];
   switch (cap) {
     case GL_LIGHTING: return &c.lighting.enabled;
     case GL_NORMALIZE: return &c.lighting.normalize;
@@ -35,12 +36,12 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_TEXTURE_GEN_T: return &c.textures.gen[1].enabled;
     case GL_TEXTURE_GEN_R: return &c.textures.gen[2].enabled;
     case GL_TEXTURE_GEN_Q: return &c.textures.gen[3].enabled;
-    case GL_POINT_SMOOTH: return &c.inert.point_smooth;
-    case GL_LINE_SMOOTH: return &c.inert.line_smooth;
-    case GL_LINE_STIPPLE: return &c.inert.line_stipple;
-    case GL_POLYGON_OFFSET_POINT: return &c.inert.offset_point;
-    case GL_POLYGON_OFFSET_LINE: return &c.inert.offset_line;
-    case GL_POLYGON_SMOOTH: return &c.inert.polygon_smooth;
+    case GL_POINT_SMOOTH: return &c.prims.point_smooth;
+    case GL_LINE_SMOOTH: return &c.prims.line_smooth;
+    case GL_LINE_STIPPLE: return &c.prims.line_stipple;
+    case GL_POLYGON_OFFSET_POINT: return &c.prims.offset_point;
+    case GL_POLYGON_OFFSET_LINE: return &c.prims.offset_line;
+    case GL_POLYGON_SMOOTH: return &c.prims.polygon_smooth;
     default: return eval_capability_flag(c, cap);
   }
 }

@@ -20,9 +20,11 @@ void vertex_v(GlContext& c, const T* v, int n) {
   vertex(c, double(v[0]), double(v[1]), n > 2 ? double(v[2]) : 0.0, n > 3 ? double(v[3]) : 1.0);
 }
 
-// glRect: a GL_POLYGON (x1, y1), (x2, y1), (x2, y2), (x1, y2) in z = 0 (section 2.9).
+// glRect: the polygon (x1, y1), (x2, y1), (x2, y2), (x1, y2) in z = 0 (section 2.9), drawn
+// as Mesa draws it, as GL_QUADS: the two differ only where the implementation may choose
+// (the order its edges are drawn in GL_LINE mode, which the line stipple shows).
 void rect(GlContext& c, double x1, double y1, double x2, double y2) {
-  begin_primitive(c, GL_POLYGON);
+  begin_primitive(c, GL_QUADS);
   emit_vertex(c, glm::vec4(float(x1), float(y1), 0.0f, 1.0f));
   emit_vertex(c, glm::vec4(float(x2), float(y1), 0.0f, 1.0f));
   emit_vertex(c, glm::vec4(float(x2), float(y2), 0.0f, 1.0f));

@@ -35,10 +35,6 @@ static const GLenum kNotYet[] = {
   GL_PIXEL_MAP_S_TO_S_SIZE, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_DISTANCE,
   GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID,
   GL_CURRENT_RASTER_TEXTURE_COORDS, GL_ACCUM_CLEAR_VALUE,
-  GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT, GL_LINE_WIDTH, GL_LINE_WIDTH_GRANULARITY,
-  GL_LINE_WIDTH_RANGE, GL_POINT_SIZE, GL_POINT_SIZE_GRANULARITY, GL_POINT_SIZE_RANGE,
-  GL_POLYGON_MODE, GL_MAX_CLIP_PLANES, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
-  GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
   GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
   GL_TEXTURE_GEN_Q,
   GL_FEEDBACK_BUFFER_SIZE, GL_FEEDBACK_BUFFER_TYPE, GL_SELECTION_BUFFER_SIZE,
@@ -92,7 +88,8 @@ static void dump(const char* phase) {
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_STENCIL_TEST, GL_TEXTURE_2D, GL_ALPHA_TEST, GL_FOG, GL_COLOR_LOGIC_OP, GL_INDEX_LOGIC_OP,
     GL_SCISSOR_TEST, GL_POLYGON_STIPPLE, GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY,
-    GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY,
+    GL_INDEX_ARRAY, GL_TEXTURE_COORD_ARRAY, GL_EDGE_FLAG_ARRAY, GL_CLIP_PLANE0, GL_CLIP_PLANE3,
+    GL_CLIP_PLANE0 + 7,
   };
   for (size_t k = 0; k < sizeof kCaps / sizeof kCaps[0]; ++k) {
     GLfloat on = glIsEnabled(kCaps[k]);
@@ -148,6 +145,14 @@ static void dump(const char* phase) {
     glGetMaterialfv(GL_BACK, kMaterialParams[k], m);
     snprintf(what, sizeof what, "back material 0x%04x", kMaterialParams[k]);
     print_floats(phase, what, m, 4);
+  }
+  for (int i = 0; i < 8; ++i) { /* Mesa's 8 user clip planes, in eye space */
+    GLdouble d[4] = {-7, -7, -7, -7};
+    glGetClipPlane((GLenum)(GL_CLIP_PLANE0 + i), d);
+    GLfloat f[4] = {(GLfloat)d[0], (GLfloat)d[1], (GLfloat)d[2], (GLfloat)d[3]};
+    char what[32];
+    snprintf(what, sizeof what, "clip plane %d", i);
+    print_floats(phase, what, f, 4);
   }
 }
 
@@ -210,6 +215,26 @@ static void set_state(int k) {
   if (k) glDisable(GL_LINE_STIPPLE); else glEnable(GL_LINE_STIPPLE);
   if (k) glEnable(GL_POINT_SMOOTH); else glDisable(GL_POINT_SMOOTH);
   glPolygonOffset(1.5f + (GLfloat)k, -2.0f);
+  glPointSize(2.0f + 1.5f * (GLfloat)k);
+  glLineWidth(1.5f + (GLfloat)k);
+  glLineStipple(2 + 3 * k, (GLushort)(k ? 0xf0f0 : 0x3333));
+  glPolygonMode(GL_FRONT, k ? GL_LINE : GL_POINT);
+  glPolygonMode(GL_BACK, k ? GL_FILL : GL_LINE);
+  {
+    /* Planes under the modelview of the moment, taken to eye space when given. */
+    const GLdouble eq[4] = {1.0 + k, -2.0, 0.5 * k, 3.0};
+    glMatrixMode(GL_MODELVIEW);
+    glPushMatrix();
+    glTranslatef(1.0f + (GLfloat)k, 2.0f, -3.0f);
+    glRotatef(30.0f + 20.0f * (GLfloat)k, 0.0f, 1.0f, 1.0f);
+    glClipPlane((GLenum)(GL_CLIP_PLANE0 + 3 * k), eq);
+    glClipPlane((GLenum)(GL_CLIP_PLANE0 + 7), eq);
+    glPopMatrix();
+    glMatrixMode(k ? GL_PROJECTION : GL_TEXTURE);
+  }
+  if (k) glEnable(GL_CLIP_PLANE0); else glDisable(GL_CLIP_PLANE0);
+  if (k) glDisable(GL_CLIP_PLANE3); else glEnable(GL_CLIP_PLANE3);
+  if (k) glEnable((GLenum)(GL_CLIP_PLANE0 + 7)); else glDisable((GLenum)(GL_CLIP_PLANE0 + 7));
   if (k) glDisable(GL_DITHER); else glEnable(GL_DITHER);
   glHint(GL_PERSPECTIVE_CORRECTION_HINT, k ? GL_NICEST : GL_FASTEST);
   glHint(GL_POINT_SMOOTH_HINT, k ? GL_FASTEST : GL_NICEST);

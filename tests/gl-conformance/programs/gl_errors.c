@@ -66,6 +66,9 @@ static void wrong_arguments(void) {
   E(glCallLists(-1, GL_UNSIGNED_BYTE, kUbytes));
   E(glCallLists(1, BAD, kUbytes));
   E(glCallLists(1, GL_FLOAT, kFloats));
+  E(glClipPlane(BAD, kDoubles));
+  E(glClipPlane(GL_CLIP_PLANE0 + 8, kDoubles));
+  E(glClipPlane(GL_CLIP_PLANE0 - 1, kDoubles));
   E(glClear(0x1));
   E(glClear(GL_ACCUM_BUFFER_BIT));
   E(glColorMaterial(BAD, GL_AMBIENT));
@@ -89,6 +92,8 @@ static void wrong_arguments(void) {
   E(glDrawElements(GL_TRIANGLES, 3, BAD, kUbytes));
   E(glEdgeFlagPointer(-1, kUbytes));
   E(glEnable(BAD));
+  E(glEnable(GL_CLIP_PLANE0 + 8));
+  E(glIsEnabled(GL_CLIP_PLANE0 + 8));
   E(glEnable(GL_VERTEX_ARRAY));
   E(glEnableClientState(BAD));
   E(glEnableClientState(GL_LIGHTING));
@@ -109,6 +114,9 @@ static void wrong_arguments(void) {
   E(glGenLists(0));
   E(glGenTextures(-1, names));
   E(glGetBooleanv(BAD, bbuf));
+  E(glGetBooleanv(GL_CLIP_PLANE0 + 8, bbuf));
+  E(glGetClipPlane(BAD, dbuf));
+  E(glGetClipPlane(GL_CLIP_PLANE0 + 8, dbuf));
   E(glGetDoublev(BAD, dbuf));
   E(glGetFloatv(BAD, fbuf));
   E(glGetIntegerv(BAD, ibuf));
@@ -152,6 +160,11 @@ static void wrong_arguments(void) {
   E(glLighti(GL_LIGHT0, GL_CONSTANT_ATTENUATION, -1));
   E(glLightfv(GL_LIGHT0, BAD, kFloats));
   E(glLightiv(GL_LIGHT0, GL_QUADRATIC_ATTENUATION, kInts));
+  E(glLineStipple(0, 0x0f0f)); /* no error: the factor is clamped to [1, 256] */
+  E(glLineStipple(-5, 0x0f0f));
+  E(glLineStipple(1, 0xffff));
+  E(glLineWidth(0.0f));
+  E(glLineWidth(-1.0f));
   E(glMaterialf(BAD, GL_SHININESS, 1.0f));
   E(glMaterialf(GL_FRONT, GL_SHININESS, 200.0f));
   E(glMaterialf(GL_FRONT, GL_AMBIENT, 1.0f));
@@ -180,6 +193,13 @@ static void wrong_arguments(void) {
   E(glOrtho(1, 1, 0, 1, 0, 1));
   E(glOrtho(0, 1, 0, 1, 1, 1));
   E(glPixelStoref(BAD, 1.0f));
+  E(glPointSize(0.0f));
+  E(glPointSize(-3.0f));
+  E(glPolygonMode(BAD, GL_LINE));
+  E(glPolygonMode(GL_FRONT, BAD));
+  E(glPolygonMode(GL_LEFT, GL_LINE));
+  E(glPolygonMode(GL_FRONT_AND_BACK, GL_FILL + 3));
+  E(glPolygonMode(BAD, BAD));
   E(glPolygonStipple(kUbytes));
   E(glPixelStorei(GL_PACK_ALIGNMENT, 3));
   E(glPixelStorei(GL_UNPACK_ALIGNMENT, 0));
@@ -277,6 +297,14 @@ static void inside_begin_end(void) {
   B(glGetPolygonStipple(pixels));
   B(glLogicOp(GL_XOR));
   B(glPolygonStipple(kUbytes));
+  B(glClipPlane(GL_CLIP_PLANE0, kDoubles));
+  B(glGetClipPlane(GL_CLIP_PLANE0, dbuf));
+  B(glLineStipple(2, 0x0f0f));
+  B(glLineWidth(2.0f));
+  B(glPointSize(2.0f));
+  B(glPolygonMode(GL_FRONT_AND_BACK, GL_LINE));
+  B(glEnable(GL_CLIP_PLANE0)), B(glDisable(GL_CLIP_PLANE0)), B(glIsEnabled(GL_CLIP_PLANE0));
+  B(glEnable(GL_LINE_STIPPLE)), B(glEnable(GL_POLYGON_OFFSET_LINE));
   B(glScissor(0, 0, 4, 4));
   B(glBindTexture(GL_TEXTURE_2D, 0));
   B(glBlendFunc(GL_ONE, GL_ZERO));

@@ -35,11 +35,6 @@ static const GLenum kNotYet[] = {
   GL_PIXEL_MAP_S_TO_S_SIZE, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_DISTANCE,
   GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID,
   GL_CURRENT_RASTER_TEXTURE_COORDS, GL_ACCUM_CLEAR_VALUE,
-  /* points, lines, polygon modes, clip planes */
-  GL_LINE_STIPPLE_PATTERN, GL_LINE_STIPPLE_REPEAT, GL_LINE_WIDTH, GL_LINE_WIDTH_GRANULARITY,
-  GL_LINE_WIDTH_RANGE, GL_POINT_SIZE, GL_POINT_SIZE_GRANULARITY, GL_POINT_SIZE_RANGE,
-  GL_POLYGON_MODE, GL_MAX_CLIP_PLANES, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
-  GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5,
   /* 1D textures, texture coordinate generation */
   GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
   GL_TEXTURE_GEN_Q,
@@ -119,7 +114,8 @@ static void dump_pname(const char* phase, const Pname* p) {
 }
 
 static const GLenum kCaps[] = {
-  GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE5, GL_COLOR_LOGIC_OP,
+  GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE2, GL_CLIP_PLANE5,
+  GL_CLIP_PLANE0 + 7, GL_COLOR_LOGIC_OP,
   GL_COLOR_MATERIAL, GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_INDEX_LOGIC_OP,
   GL_LIGHT0, GL_LIGHT7, GL_LIGHTING, GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_MAP1_COLOR_4,
   GL_MAP1_INDEX, GL_MAP1_NORMAL, GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_4,
@@ -162,9 +158,23 @@ static void dump_pointers(const char* phase, const void* base) {
   }
 }
 
+/* glGetClipPlane of Mesa's 8 planes (eye space), and of one past them (GL_INVALID_ENUM). */
+static void dump_clip_planes(const char* phase) {
+  for (int i = 0; i <= 8; ++i) {
+    GLdouble d[5] = {-7, -7, -7, -7, -7};
+    glGetClipPlane((GLenum)(GL_CLIP_PLANE0 + i), d);
+    GLenum e = glGetError();
+    fprintf(out, "%s glGetClipPlane(%d): %.9g %.9g %.9g %.9g %.9g err %x\n", phase, i, d[0], d[1], d[2], d[3],
+            d[4], e);
+    GLfloat f[4] = {(GLfloat)d[0], (GLfloat)d[1], (GLfloat)d[2], (GLfloat)d[3]};
+    cell(hash_floats(f, 4, e));
+  }
+}
+
 static void dump(const char* phase, const void* base) {
   for (int k = 0; k < kPnameCount; ++k) dump_pname(phase, &kPnames[k]);
   dump_caps(phase);
+  dump_clip_planes(phase);
   dump_pointers(phase, base);
   /* Unknown pnames */
   GLint v = 77;
@@ -222,6 +232,19 @@ static void change_state(void) {
   glStencilMask(0x3c);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.5f, -2.0f);
+  glPointSize(3.5f);
+  glLineWidth(2.5f);
+  glLineStipple(3, 0xf0f0);
+  glEnable(GL_LINE_STIPPLE);
+  glEnable(GL_POINT_SMOOTH);
+  glEnable(GL_POLYGON_OFFSET_LINE);
+  glPolygonMode(GL_FRONT, GL_LINE);
+  glPolygonMode(GL_BACK, GL_POINT);
+  {
+    const GLdouble eq[4] = {1.0, -2.0, 0.5, 3.0};
+    glClipPlane(GL_CLIP_PLANE2, eq); /* under the translated and scaled modelview */
+    glEnable(GL_CLIP_PLANE2);
+  }
   glDisable(GL_DITHER);
   glEnable(GL_ALPHA_TEST);
   glAlphaFunc(GL_GEQUAL, 0.3f);
