@@ -95,7 +95,8 @@ static void raster(void) {
   glRasterPos2f(-5.0f, 3.0f); /* outside: invalid, the rest kept */
   query(GL_CURRENT_RASTER_POSITION_VALID, 1);
   query(GL_CURRENT_RASTER_POSITION, 4);
-  static const GLubyte bits[2] = {0xff, 0xff};
+  /* Two rows of one bit, each row padded to GL_UNPACK_ALIGNMENT's 4 bytes. */
+  static const GLubyte bits[8] = {0xff, 0, 0, 0, 0xff, 0, 0, 0};
   glBitmap(1, 2, 0.0f, 0.0f, 5.0f, 5.0f, bits); /* no move while invalid */
   query(GL_CURRENT_RASTER_POSITION, 4);
   glLoadIdentity();
