@@ -6,12 +6,14 @@
  * from glEdgeFlag inside a compiled glBegin/glEnd and from an edge-flag array dereferenced by
  * glArrayElement and glDrawArrays at compile time (the arrays changed before the call); line
  * glDrawArrays / glDrawElements compiled; a list called under a user clip plane and a new
- * modelview; a stippled strip of 3,000 vertices. A 4 x 2 grid of panels. */
+ * modelview; a stippled strip of 3,000 vertices; evaluator meshes in GL_LINE and GL_POINT
+ * modes compiled; stippled glRect outlines; hidden-line removal (GL_POLYGON_OFFSET_LINE) from
+ * lists; wide smooth lines and points blended. A 4 x 3 grid of panels. */
 #include <math.h>
 
 #include "conf.h"
 
-enum { kCols = 4, kRows = 2 };
+enum { kCols = 4, kRows = 3 };
 
 static void panel(const ConfContext* c, int col, int row) {
   conf_panel(c, col, row, kCols, kRows);
@@ -337,9 +339,144 @@ static void depth_list(void) {
   glDeleteLists(list, 1);
 }
 
+/* Evaluator meshes and curves drawn as lines and points (GL 1.1 section 5.1), compiled. */
+static void eval_list(void) {
+  GLfloat cp[4][4][3];
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) {
+      cp[i][j][0] = -0.9f + 0.6f * (float)j;
+      cp[i][j][1] = -0.9f + 0.6f * (float)i;
+      cp[i][j][2] = ((i == 1 || i == 2) && (j == 1 || j == 2)) ? 0.8f : 0.0f;
+    }
+  }
+  static const GLfloat curve[4][3] = {{-1.0f, 0.9f, 0}, {-0.3f, 0.1f, 0}, {0.3f, 1.1f, 0}, {1.0f, 0.3f, 0}};
+  GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glMap2f(GL_MAP2_VERTEX_3, 0, 1, 3, 4, 0, 1, 12, 4, &cp[0][0][0]);
+  glEnable(GL_MAP2_VERTEX_3);
+  glMap1f(GL_MAP1_VERTEX_3, 0, 1, 3, 4, &curve[0][0]);
+  glEnable(GL_MAP1_VERTEX_3);
+  glColor3f(1, 0.5f, 0.2f);
+  glMapGrid2f(8, 0, 1, 6, 0, 1);
+  glEvalMesh2(GL_LINE, 0, 8, 0, 6);
+  glColor3f(0.2f, 1, 0.3f);
+  glPointSize(3);
+  glMapGrid2f(5, 0.1f, 0.9f, 5, 0.1f, 0.9f);
+  glEvalMesh2(GL_POINT, 0, 5, 0, 5);
+  glColor3f(0.4f, 0.6f, 1);
+  glLineWidth(2);
+  glMapGrid1f(20, 0, 1);
+  glEvalMesh1(GL_LINE, 0, 20);
+  glColor3f(1, 1, 1);
+  glPointSize(4);
+  glEvalMesh1(GL_POINT, 0, 20);
+  glPointSize(1);
+  glLineWidth(1);
+  glDisable(GL_MAP2_VERTEX_3);
+  glDisable(GL_MAP1_VERTEX_3);
+  glEndList();
+  glRotatef(20, 1, 0, 0);
+  glCallList(list);
+  glDeleteLists(list, 1);
+}
+
+/* glRect outlines (drawn as Mesa draws rectangles: quads) stippled, and filled beside. */
+static void rect_list(void) {
+  GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glEnable(GL_LINE_STIPPLE);
+  glLineStipple(1, 0x0f3f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  for (int i = 0; i < 5; ++i) {
+    glColor3f(1, 0.2f + 0.15f * (float)i, 0.3f);
+    glRectf(-0.9f + 0.1f * (float)i, -0.9f + 0.1f * (float)i, 0.9f - 0.12f * (float)i, 0.9f - 0.08f * (float)i);
+  }
+  glLineStipple(3, 0x5555);
+  glColor3f(0.3f, 0.9f, 1);
+  glRecti(1, 1, -1, -1); /* clockwise: a back face */
+  glDisable(GL_LINE_STIPPLE);
+  glPolygonMode(GL_FRONT, GL_FILL);
+  glPolygonMode(GL_BACK, GL_POINT);
+  glPointSize(3);
+  glColor3f(0.9f, 0.9f, 0.3f);
+  glRectf(0.3f, -0.2f, -0.2f, 0.3f); /* back facing: its corners */
+  glRectf(-0.15f, -0.15f, 0.15f, 0.15f); /* front facing: filled */
+  glPointSize(1);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glEndList();
+  glCallList(list);
+  glDeleteLists(list, 1);
+}
+
+/* Hidden-line removal from lists: a surface, then its edges and vertices offset towards the eye. */
+static void hidden_line_list(void) {
+  GLuint list = glGenLists(2);
+  glNewList(list, GL_COMPILE);
+  conf_sphere(0.9f, 14, 10);
+  glEndList();
+  glNewList(list + 1, GL_COMPILE);
+  glEnable(GL_DEPTH_TEST);
+  glColor3f(0.15f, 0.15f, 0.2f);
+  glCallList(list);
+  glEnable(GL_POLYGON_OFFSET_LINE);
+  glEnable(GL_POLYGON_OFFSET_POINT);
+  glPolygonOffset(-1, -2);
+  glColor3f(1, 1, 0.6f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glCallList(list);
+  glPointSize(3);
+  glColor3f(1, 0.3f, 0.3f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_POINT);
+  glCallList(list);
+  glPointSize(1);
+  glDisable(GL_POLYGON_OFFSET_LINE);
+  glDisable(GL_POLYGON_OFFSET_POINT);
+  glPolygonOffset(0, 0);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  glDisable(GL_DEPTH_TEST);
+  glEndList();
+  glRotatef(30, 1, 0.3f, 0);
+  glCallList(list + 1);
+  glDeleteLists(list, 2);
+}
+
+/* Wide smooth lines and points blended, from a list. */
+static void smooth_list(void) {
+  GLuint list = glGenLists(1);
+  glNewList(list, GL_COMPILE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_LINE_SMOOTH);
+  for (int i = 0; i < 6; ++i) {
+    glLineWidth(1.0f + (float)i);
+    glBegin(GL_LINES);
+    glColor3f(1, 0.3f + 0.1f * (float)i, 0.2f);
+    glVertex2f(-0.95f, 0.9f - 0.17f * (float)i);
+    glColor3f(0.2f, 0.6f, 1);
+    glVertex2f(0.1f, 0.75f - 0.23f * (float)i);
+    glEnd();
+  }
+  glDisable(GL_LINE_SMOOTH);
+  glEnable(GL_POINT_SMOOTH);
+  for (int i = 0; i < 6; ++i) {
+    glPointSize(2.0f + 2.0f * (float)i);
+    glBegin(GL_POINTS);
+    glColor3f(0.4f + 0.1f * (float)i, 1, 0.5f);
+    glVertex2f(0.5f + 0.07f * (float)(i % 2), 0.85f - 0.33f * (float)i);
+    glEnd();
+  }
+  glDisable(GL_POINT_SMOOTH);
+  glDisable(GL_BLEND);
+  glLineWidth(1);
+  glPointSize(1);
+  glEndList();
+  glCallList(list);
+  glDeleteLists(list, 1);
+}
+
 int main(int argc, char** argv) {
   ConfContext c;
-  if (!conf_init(&c, argc, argv, 384, 192)) return 1;
+  if (!conf_init(&c, argc, argv, 384, 288)) return 1;
   glClearColor(0.1f, 0.1f, 0.12f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   panel(&c, 0, 0);
@@ -358,5 +495,13 @@ int main(int argc, char** argv) {
   long_strip_list();
   panel(&c, 3, 1);
   depth_list();
+  panel(&c, 0, 2);
+  eval_list();
+  panel(&c, 1, 2);
+  rect_list();
+  panel(&c, 2, 2);
+  hidden_line_list();
+  panel(&c, 3, 2);
+  smooth_list();
   return conf_finish(&c);
 }
