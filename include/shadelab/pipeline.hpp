@@ -156,6 +156,32 @@ struct FragmentCapture {
   std::size_t dropped = 0;        ///< entries arriving once `limit` were kept (not kept)
 };
 
+/// A vertex of a primitive that a draw hands to a PrimitiveObserver instead of rasterizing it.
+struct ObservedVertex {
+  glm::vec4 window;    ///< GL window x, y (y up), depth z in [0, 1], and the clip-space w
+  glm::vec4 color;     ///< its colour, of the face the primitive shows (two-sided lighting)
+  glm::vec4 texcoord;  ///< (s, t, r, q), not divided by q
+};
+
+/// GL's feedback and selection modes (GL 1.1 sections 5.2, 5.3): what a draw would rasterize,
+/// handed over primitive by primitive, in the order and form Mesa's draw module gives its last
+/// stage: after clipping (a clipped polygon as a fan of triangles), culling, the polygon modes
+/// and edge flags, before any rasterization rule (wide and stippled lines, large points and flat
+/// shading change nothing here). Set FragmentState::observer and nothing is drawn.
+class PrimitiveObserver {
+ public:
+  virtual void point(const ObservedVertex& v) = 0;
+  virtual void line(const ObservedVertex& a, const ObservedVertex& b) = 0;
+  virtual void triangle(const ObservedVertex& a, const ObservedVertex& b, const ObservedVertex& c) = 0;
+  /// Where a triangle of a polygon drawn as lines starts the line stipple again (its
+  /// TriangleFlag kTriangleRestartStipple): GL's feedback marks the next line it reports
+  /// (GL_LINE_RESET_TOKEN). Lines of line primitives never call it, as in Mesa.
+  virtual void restart_stipple() = 0;
+
+ protected:
+  ~PrimitiveObserver() = default;
+};
+
 /// Sorts every pixel's captured fragments far to near and blends them over the framebuffer with
 /// each fragment's own blend state, then empties the capture.
 void resolve_fragments(Framebuffer& fb, FragmentCapture& capture);
@@ -257,6 +283,9 @@ struct FragmentState {
   /// When set, fragments passing the depth test are captured (with `blend`) instead of being
   /// written; depth is not written. For exact transparency.
   FragmentCapture* capture = nullptr;
+  /// When set, the draw's primitives go to it instead of being rasterized (the reference
+  /// path, even when a fast context is given): nothing is written.
+  PrimitiveObserver* observer = nullptr;
 };
 
 /// A depth map seen from one light (shadow mapping): one face for directional and spot lights,

@@ -252,7 +252,7 @@ void draw_polygon(const ReferenceDraw& ctx, std::vector<ClipVertex>& poly,
 void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport& viewport,
                     const FragmentState& fragment, const ShadeState& shade,
                     const VertexInput& in, RenderStats* stats_out, PipelineContext* fast) {
-  if (fast) return detail::draw_triangles_fast(*fast, fb, projection, viewport, fragment, shade, in, stats_out);
+  if (fast && !fragment.observer) return detail::draw_triangles_fast(*fast, fb, projection, viewport, fragment, shade, in, stats_out);
   RenderStats local;
   RenderStats& stats = stats_out ? *stats_out : local;
   auto t0 = Clock::now();
@@ -269,7 +269,8 @@ void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport
   const std::span<const glm::vec4> user(planes.data(), std::size_t(clip_space_planes(fragment.clip, projection, planes)));
   std::vector<ClipVertex> poly, scratch;
   std::vector<WindowVertex> win;
-  const bool filled = !PrimAssembler::unfilled(fragment);
+  // Observed draws take Mesa's draw module's path for every polygon (prims.cpp).
+  const bool filled = !PrimAssembler::unfilled(fragment) && !fragment.observer;
   for (const Triangle& t : filled ? in.triangles : std::span<const Triangle>{}) {
     ++stats.triangles_in;
     if (t[0] >= verts.size() || t[1] >= verts.size() || t[2] >= verts.size()) continue;

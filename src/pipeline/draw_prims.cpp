@@ -44,7 +44,7 @@ PrimVertex prim_vertex(const PrimAssembler& assembler, const ClipVertex& v) {
 void draw_prims_reference(const ReferenceDraw& ctx, const glm::mat4& projection, const VertexInput& in,
                           const std::vector<ClipVertex>& verts) {
   const FragmentState& f = *ctx.fragment;
-  const bool unfilled = PrimAssembler::unfilled(f);
+  const bool unfilled = PrimAssembler::unfilled(f) || f.observer;
   if (!unfilled && in.lines.empty() && in.points.empty()) return;
   const bool flat = ctx.shade->shading == ShadingMode::kFlat;
   PrimAssembler assembler(f, *ctx.viewport, projection, ctx.fb->height, flat,

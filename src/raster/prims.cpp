@@ -67,6 +67,18 @@ double gl_y(float down, int fb_height) { return double(fb_height) - double(down)
 // Mesa's SATURATE: NaN passes through.
 float saturate(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
 
+// What a PrimitiveObserver is told of a vertex: GL window coordinates (y up, in float as
+// Mesa's feedback stage computes height - y), the clip w back from 1/w, and the colour of the
+// face shown.
+ObservedVertex observed(const PrimVertex& v, bool front, int fb_height) {
+  ObservedVertex o;
+  o.window = {v.win.x, float(fb_height) - v.win.y, v.z, 1.0f / v.inv_w};
+  const int color = front ? kFrontColor : kBackColor;
+  o.color = {v.attr[color], v.attr[color + 1], v.attr[color + 2], v.attr[color + 3]};
+  o.texcoord = {v.attr[kTexCoord], v.attr[kTexCoord + 1], v.attr[kTexCoord + 2], v.attr[kTexCoord + 3]};
+  return o;
+}
+
 }  // namespace
 
 float coverage_at(const Coverage& c, double x, double y) {
@@ -121,6 +133,7 @@ void PrimAssembler::point(const PrimVertex& p, std::uint32_t provoking, PieceSin
 
 void PrimAssembler::segment(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
                             PieceSink& sink) {
+  if (PrimitiveObserver* o = frag_.observer) return o->line(observed(a, front, fb_height_), observed(b, front, fb_height_));
   if (frag_.line.stipple) return stippled(a, b, front, provoking, sink);
   if (frag_.line.smooth) return smooth_line(a, b, front, provoking, sink);
   aliased_line(a, b, front, provoking, sink);
@@ -213,6 +226,7 @@ void PrimAssembler::smooth_line(const PrimVertex& a, const PrimVertex& b, bool f
 }
 
 void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t provoking, PieceSink& sink) {
+  if (PrimitiveObserver* o = frag_.observer) return o->point(observed(v, front, fb_height_));
   if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a point
   const float size = clamp_size(frag_.point.size);
   Piece& p = piece_;
@@ -319,6 +333,10 @@ void PrimAssembler::fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std
     const float dz = unfilled_offset(w, det);
     for (PrimVertex& u : w) u.z = saturate(u.z + dz);
   }
+  if (mode == PolygonMode::kFill && frag_.observer) {
+    return frag_.observer->triangle(observed(w[0], front_colors, fb_height_), observed(w[1], front_colors, fb_height_),
+                                    observed(w[2], front_colors, fb_height_));
+  }
   if (mode == PolygonMode::kFill) {
     if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a triangle
     Piece& p = piece_;
@@ -334,7 +352,10 @@ void PrimAssembler::fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std
     return sink.piece(p);
   }
   if (mode == PolygonMode::kLine) {
-    if (flags & kTriangleRestartStipple) stipple_counter_ = 0;
+    if (flags & kTriangleRestartStipple) {
+      stipple_counter_ = 0;
+      if (frag_.observer) frag_.observer->restart_stipple();
+    }
     if (flags & kTriangleEdge20) segment(w[2], w[0], front_colors, provoking, sink);
     if (flags & kTriangleEdge01) segment(w[0], w[1], front_colors, provoking, sink);
     if (flags & kTriangleEdge12) segment(w[1], w[2], front_colors, provoking, sink);

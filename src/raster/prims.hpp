@@ -4,7 +4,9 @@
 // rasterizer (a quadrilateral, or the triangles of a smooth line or point) with their
 // corners' attributes. The order of these stages is Mesa's draw module's (clip, cull,
 // two-sided colours, offset, flat shading, unfilled, stipple). Draws no pixels: a sink takes
-// the pieces.
+// the pieces, or, in a draw with FragmentState::observer (GL's selection and feedback), the
+// observer takes the points, lines and triangles themselves where they would become pieces
+// (the filled triangles of such a draw come here too).
 #pragma once
 
 #include <cstdint>
