@@ -155,8 +155,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   int calls = 0;
   while (!in.done() && ++calls < 400) {
     const std::uint8_t op = in.byte();
-    // Evaluators take the three highest bytes (which chose cases 61 to 63 before them).
-    switch (op >= 253 ? 64 + (op - 253) : op % 64) {
+    // Evaluators take the three highest bytes (which chose cases 61 to 63 before them), the
+    // selection and feedback modes the byte below them (case 60 before).
+    switch (op >= 253 ? 64 + (op - 253) : op == 252 ? 67 : op % 64) {
       case 0: glEnable(in.any_enum()); break;
       case 1: glDisable(in.any_enum()); break;
       case 2: glBegin(in.any_enum()); break;
@@ -372,6 +373,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         glGetPixelMapfv(map, reinterpret_cast<GLfloat*>(b->pixels));
         glGetPixelMapuiv(map, reinterpret_cast<GLuint*>(b->pixels));
         glGetPixelMapusv(map, reinterpret_cast<GLushort*>(b->pixels));
+        break;
+      }
+      case 67: {  // selection and feedback: modes, our buffers of any size, the name stack
+        GLuint* const select = reinterpret_cast<GLuint*>(b->out);  // 64 values, never null:
+        GLfloat* const feedback = reinterpret_cast<GLfloat*>(b->out);  // GL checks no select buffer
+        switch (in.byte() % 6) {
+          case 0: (void)glRenderMode(in.byte() % 4 ? GL_RENDER + GLenum(in.byte() % 3) : in.any_enum()); break;
+          case 1: glSelectBuffer(in.small(-1, 64), select); break;
+          case 2:
+            glFeedbackBuffer(in.small(-1, 64), in.byte() % 8 ? GL_2D + GLenum(in.byte() % 5) : in.any_enum(),
+                             in.byte() % 8 ? feedback : nullptr);
+            break;
+          case 3: glPushName(in.byte()); break;
+          case 4: glPopName(); glLoadName(in.byte()); break;
+          default: glInitNames(); glPassThrough(in.number()); break;
+        }
         break;
       }
       case 64: {  // glMap1/glMap2 of any target, orders up to 31, strides up to 128 values

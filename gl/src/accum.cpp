@@ -112,6 +112,7 @@ void exec::Accum(GlContext& c, GLenum op, GLfloat value) {
     return c.set_error(GL_INVALID_ENUM);
   }
   if (c.buffers.accum_bits == 0) return c.set_error(GL_INVALID_OPERATION);
+  if (c.render_mode != GL_RENDER) return;  // nothing is drawn in selection or feedback mode (as Mesa)
   settle_clears(c);  // the colour buffer as drawn so far
   value = finite_or_zero(value);
   switch (op) {

@@ -59,7 +59,8 @@ void exec::Bitmap(GlContext& c, GLsizei width, GLsizei height, GLfloat xorig, GL
   if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
   RasterPosition& r = c.raster_pos;
   if (!r.valid) return;
-  if (width > 0 && height > 0 && bitmap) draw_bitmap(c, width, height, xorig, yorig, bitmap);
+  if (c.render_mode == GL_FEEDBACK) feedback_raster_position(c, GL_BITMAP_TOKEN);
+  else if (c.render_mode == GL_RENDER && width > 0 && height > 0 && bitmap) draw_bitmap(c, width, height, xorig, yorig, bitmap);
   r.window.x += xmove;
   r.window.y += ymove;
 }

@@ -23,6 +23,7 @@
 
 #include "gl/src/dlist_state.hpp"
 #include "gl/src/eval_state.hpp"
+#include "gl/src/feedback_state.hpp"
 #include "gl/src/pixel_state.hpp"
 #include "gl/src/primitive.hpp"
 #include "gl/src/texformat.hpp"
@@ -429,6 +430,10 @@ struct GlContext {
   ClientArrays arrays;
   ListState lists;
   EvalState eval;
+  GLenum render_mode = GL_RENDER;  // glRenderMode (feedback.cpp)
+  SelectionState selection;
+  FeedbackState feedback;
+  RenderModeObserver render_mode_observer{*this};
   std::vector<AttribRecord> attrib_stack;              // glPushAttrib
   std::vector<ClientAttribRecord> client_attrib_stack;  // glPushClientAttrib
   Primitive prim;

@@ -400,7 +400,10 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   std::vector<std::uint8_t>& finite = c.immediate_scratch.finite;
   finite.resize(count);
   const bool small_projection = bounded(&projection[0][0], 16);
-  const bool unfilled = polygons && c.prims.unfilled();
+  // GL_SELECT and GL_FEEDBACK: the pipeline reports the primitives (feedback.cpp) as Mesa's
+  // draw module decomposes them, the polygons' path in line and point mode.
+  const bool observe = c.render_mode != GL_RENDER;
+  const bool unfilled = polygons && (c.prims.unfilled() || observe);
   const bool quads = p.mode == GL_QUADS && !unfilled;
   const bool normals = p.deferred_lighting && !p.object_normals, colors = !p.deferred_lighting;
   bool outside = false;
@@ -466,8 +469,14 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     in.secondary_colors = batch.s.secondary;
     if (c.lighting.model.two_side) in.back_secondary_colors = batch.s.back_secondary;
   }
-  if (shade.texture) in.texcoords = batch.s.texcoords;
+  if (shade.texture || p.textured) in.texcoords = batch.s.texcoords;
   in.stipple_counter = &p.stipple_counter;
+  if (observe) {
+    FragmentState f = fragment_state(c);
+    f.observer = &c.render_mode_observer;
+    draw_triangles(c.fb, projection, c.raster.viewport, f, shade, in);
+    return;
+  }
   make_pipeline(c);
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
                  c.pipeline.get());
@@ -528,9 +537,10 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
-  // material changes the material per vertex: those go vertex by vertex.
+  // material changes the material per vertex: those go vertex by vertex, as do the draws of
+  // the selection and feedback modes.
   bool flat_ok = mode == GL_TRIANGLES || mode == GL_TRIANGLE_STRIP || mode == GL_TRIANGLE_FAN;
-  if (!is_polygon_mode(mode) || c.prims.unfilled() || (flat && !flat_ok) ||
+  if (!is_polygon_mode(mode) || c.prims.unfilled() || (flat && !flat_ok) || c.render_mode != GL_RENDER ||
       (l.enabled && l.color_material && per_vertex_color)) {
     return false;
   }
@@ -685,7 +695,8 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.deferred_lighting = c.lighting.enabled && !(c.lighting.shade_model == GL_FLAT && mode == GL_QUADS);
   // (Flat shading may copy a vertex while drawing: its normals are transformed here.)
   p.object_normals = p.deferred_lighting && c.lighting.shade_model != GL_FLAT;
-  p.textured = active_texture(c) != nullptr;
+  // Feedback reports texture coordinates whether or not a texture applies (as Mesa's).
+  p.textured = active_texture(c) != nullptr || c.render_mode == GL_FEEDBACK;
 }
 
 void settle_lighting(GlContext& c) {

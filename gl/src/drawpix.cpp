@@ -201,7 +201,9 @@ GLenum copy_error(const GlContext& c, GLsizei width, GLsizei height, GLenum type
 void exec::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type,
                       const void* pixels) {
   if (const GLenum e = draw_error(c, width, height, format, type); e != GL_NO_ERROR) return c.set_error(e);
-  if (!c.raster_pos.valid || width == 0 || height == 0) return;
+  if (!c.raster_pos.valid) return;
+  if (c.render_mode != GL_RENDER) return feedback_raster_position(c, GL_DRAW_PIXEL_TOKEN);
+  if (width == 0 || height == 0) return;
   // Mesa reports a missing image as a failed allocation of the texture it would make of it.
   if (!pixels) return c.set_error(GL_OUT_OF_MEMORY);
   PixelImage img;
@@ -226,7 +228,9 @@ void save::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format
 // there (section 4.3.3).
 void exec::CopyPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type) {
   if (const GLenum e = copy_error(c, width, height, type); e != GL_NO_ERROR) return c.set_error(e);
-  if (!c.raster_pos.valid || width == 0 || height == 0) return;
+  if (!c.raster_pos.valid) return;
+  if (c.render_mode != GL_RENDER) return feedback_raster_position(c, GL_COPY_PIXEL_TOKEN);
+  if (width == 0 || height == 0) return;
   settle_clears(c);
   PixelImage img;
   img.width = width, img.height = height;

@@ -210,6 +210,7 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
   const GLbitfield known = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT |
                            GL_ACCUM_BUFFER_BIT;
   if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
+  if (c.render_mode != GL_RENDER) return;  // nothing is drawn in selection or feedback mode (as Mesa)
   int x0, y0, x1, y1;
   if (scissor_box(c, x0, y0, x1, y1)) {
     clear_box(c, (mask & GL_COLOR_BUFFER_BIT) && draws_color(c),

@@ -166,7 +166,13 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_RGBA_MODE: out = make(Kind::kBool, {1}); return true;
     case GL_INDEX_MODE: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
     case GL_DOUBLEBUFFER: out = make(Kind::kBool, {double(c.double_buffered)}); return true;
-    case GL_RENDER_MODE: out = ints({GL_RENDER}); return true;
+    case GL_RENDER_MODE: out = ints({double(c.render_mode)}); return true;
+    // Selection and feedback (GL 1.1 table 6.31).
+    case GL_FEEDBACK_BUFFER_SIZE: out = ints({double(c.feedback.size)}); return true;
+    case GL_FEEDBACK_BUFFER_TYPE: out = ints({double(c.feedback.type)}); return true;
+    case GL_SELECTION_BUFFER_SIZE: out = ints({double(c.selection.size)}); return true;
+    case GL_NAME_STACK_DEPTH: out = ints({double(c.selection.depth)}); return true;
+    case GL_MAX_NAME_STACK_DEPTH: out = ints({double(kMaxNameStackDepth)}); return true;
     // Colour-index state, kept in an RGBA context as Mesa keeps it.
     case GL_INDEX_CLEAR_VALUE: out = ints({double(r.clear_index)}); return true;
     case GL_INDEX_WRITEMASK: out = ints({double(GLint(r.index_mask))}); return true;
@@ -341,6 +347,8 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
     case GL_INDEX_ARRAY_POINTER: p = a.index.pointer; break;
     case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
     case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
+    case GL_FEEDBACK_BUFFER_POINTER: p = c.feedback.buffer; break;
+    case GL_SELECTION_BUFFER_POINTER: p = c.selection.buffer; break;
     default: return c.set_error(GL_INVALID_ENUM);
   }
   if (params) *params = const_cast<void*>(p);

@@ -98,6 +98,7 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
   r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
+  select_raster_position(c);
 }
 
 template <class T>

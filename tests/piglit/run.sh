@@ -62,8 +62,8 @@ select=(-t "spec@!opengl 1\\.[0-$minor]@" -x glsl -x shader)
 mkdir -p "$out"
 
 # --ci: the listed tests of those groups (a test of a newer group cannot run: piglit refuses the
-# functions of a version above the reported one; GL_VERSION says 1.0 while a GL 1.1 command is
-# still pending in the GL front end, gl/api/pending.txt).
+# functions of a version above the reported one; GL_VERSION is the newest version none of whose
+# commands is pending in the GL front end, gl/api/pending.txt).
 ci_list="$out/ci-pass.txt"
 if [ $ci = 1 ]; then
   grep -E "^spec@!opengl 1\.[0-$minor]@" "$here/ci-pass.txt" >"$ci_list" || true

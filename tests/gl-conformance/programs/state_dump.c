@@ -38,9 +38,6 @@ static const GLenum kNotYet[] = {
   /* 1D textures, texture coordinate generation */
   GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
   GL_TEXTURE_GEN_Q,
-  /* selection and feedback */
-  GL_FEEDBACK_BUFFER_SIZE, GL_FEEDBACK_BUFFER_TYPE, GL_SELECTION_BUFFER_SIZE,
-  GL_NAME_STACK_DEPTH, GL_MAX_NAME_STACK_DEPTH,
 };
 
 static int not_yet(GLenum pname) {
