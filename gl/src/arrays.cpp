@@ -226,7 +226,9 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
 // A draw in a display list: its mode and elements. Drawn only if the vertex array is enabled,
 // as the command itself draws.
 void record_draw(GlContext& c, GLenum mode, std::size_t count, const auto& index_of) {
-  if (!usable(c.arrays.vertex)) return;
+  // Without the vertex array the draw specifies nothing, but it is still recorded (with no
+  // elements): run inside glBegin/glEnd it is GL_INVALID_OPERATION, as Mesa's.
+  if (!usable(c.arrays.vertex)) count = 0;
   ListWriter w(c, Opcode::kArrayDraw);
   w.scalar(mode);
   write_elements(c, w, count, Norm::kDraw, index_of);
