@@ -280,7 +280,7 @@ struct Primitive {
   // While lighting is deferred (smooth shading): normals kept as given and transformed to eye
   // space by draw_vertices, not by each glVertex call.
   bool object_normals = false;
-  bool textured = false;  // a texture applies: texture coordinates are kept
+  bool textured = false;  // a texture applies, or GL_FEEDBACK reports them: texture coordinates are kept
   // Fixed at glBegin:
   glm::mat4 modelview{1.0f};
   glm::mat3 normal_matrix{1.0f};
