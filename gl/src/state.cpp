@@ -98,8 +98,11 @@ void pixel_store(GlContext& c, GLenum pname, double value) {
     (which == 0 ? s.swap_bytes : s.lsb_first) = std::fabs(value) >= 0.5;
     return;
   }
-  if (!(value >= 0.0 && value <= 1e9)) return c.set_error(GL_INVALID_VALUE);
-  GLint v = GLint(value + 0.5);
+  // Rounded to the nearest integer, halves away from zero (Mesa's IROUND), then checked: -0.1
+  // is 0, -0.9 is -1 and an error.
+  const double rounded = value < 0.0 ? std::ceil(value - 0.5) : std::floor(value + 0.5);
+  if (!(rounded >= 0.0 && rounded <= 1e9)) return c.set_error(GL_INVALID_VALUE);
+  GLint v = GLint(rounded);
   if (which == 5) {
     if (v != 1 && v != 2 && v != 4 && v != 8) return c.set_error(GL_INVALID_VALUE);
     s.alignment = v;
