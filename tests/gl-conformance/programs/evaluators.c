@@ -314,9 +314,10 @@ static void print_map(GLenum target) {
   glGetMapiv(target, GL_DOMAIN, i);
   fprintf(out, "map %#x domain %.9g %.9g %.9g %.9g int %d %d %d %d\n", target, d[0], d[1], two ? d[2] : 0.0,
           two ? d[3] : 0.0, i[0], i[1], two ? i[2] : 0, two ? i[3] : 0);
-  glGetMapiv(target, GL_COEFF, i);
+  static GLint coeff[4 * 30 * 30]; /* every coefficient is written: as many as f holds */
+  glGetMapiv(target, GL_COEFF, coeff);
   glGetMapdv(target, GL_ORDER, d);
-  fprintf(out, "map %#x first coeff as int %d order as double %.9g err %x\n", target, i[0], d[0], glGetError());
+  fprintf(out, "map %#x first coeff as int %d order as double %.9g err %x\n", target, coeff[0], d[0], glGetError());
 }
 
 static void print_state(const char* what) {
