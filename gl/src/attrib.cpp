@@ -88,7 +88,9 @@ void save_textures(GlContext& c, AttribRecord& r) {
   static_assert(kTextureParameterFloats == std::tuple_size_v<decltype(AttribRecord::TextureTarget::bound)>);
   const std::pair<GLenum, GLenum> targets[] = {{GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
                                                {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D}};
-  for (auto [target, binding] : targets) {
+  for (const std::pair<GLenum, GLenum>& tb : targets) {
+    // (Not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)
+    const GLenum target = tb.first, binding = tb.second;
     AttribRecord::TextureTarget t;
     t.target = target;
     GLint name = 0;
