@@ -21,6 +21,7 @@ namespace {
 enum class Kind {
   kBool,
   kInt,     // integers and enums
+  kUint,    // unsigned integers (masks): glGetIntegerv clamps to INT_MAX, as Mesa's TYPE_UINT
   kFloat,   // rounded to the nearest integer by glGetIntegerv
   kColor,   // colours, normals, depths: [-1, 1] maps to the whole integer range
 };
@@ -137,8 +138,8 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FRONT_FACE: out = ints({double(r.front_face)}); return true;
     case GL_STENCIL_FUNC: out = ints({double(r.stencil_func)}); return true;
     case GL_STENCIL_REF: out = ints({double(r.stencil_ref)}); return true;
-    case GL_STENCIL_VALUE_MASK: out = ints({double(std::min<GLuint>(r.stencil_value_mask, INT_MAX))}); return true;
-    case GL_STENCIL_WRITEMASK: out = ints({double(std::min<GLuint>(r.stencil_write_mask, INT_MAX))}); return true;
+    case GL_STENCIL_VALUE_MASK: out = make(Kind::kUint, {double(r.stencil_value_mask)}); return true;
+    case GL_STENCIL_WRITEMASK: out = make(Kind::kUint, {double(r.stencil_write_mask)}); return true;
     case GL_STENCIL_FAIL: out = ints({double(r.stencil_fail)}); return true;
     case GL_STENCIL_PASS_DEPTH_FAIL: out = ints({double(r.stencil_zfail)}); return true;
     case GL_STENCIL_PASS_DEPTH_PASS: out = ints({double(r.stencil_zpass)}); return true;
@@ -309,15 +310,21 @@ bool query(GlContext& c, GLenum pname, Values& out) {
          query_pixels(c, pname, out);
 }
 
+// Integers held as GLuint (names) read back as Mesa's TYPE_INT of a GLuint field: wrapped to
+// GLint first, whatever the query's type.
+GLint wrap_int(double v) { return GLint(std::uint32_t(std::int64_t(std::clamp(v, -9.0e18, 9.0e18)))); }
+
 template <class T>
 T convert(double v, Kind kind) {
   if constexpr (std::is_same_v<T, GLboolean>) {
     return v != 0.0 ? GL_TRUE : GL_FALSE;
   } else if constexpr (std::is_same_v<T, GLint>) {
     if (kind == Kind::kColor) return color_to_int(v);
-    return kind == Kind::kFloat ? lround_to_int(v) : GLint(v);
+    if (kind == Kind::kFloat) return lround_to_int(v);
+    if (kind == Kind::kUint) return GLint(std::min(v, double(INT_MAX)));
+    return wrap_int(v);
   } else {
-    return T(v);
+    return kind == Kind::kInt ? T(wrap_int(v)) : T(v);
   }
 }
 

@@ -294,6 +294,32 @@ static void change_state(void) {
   glEnableClientState(GL_EDGE_FLAG_ARRAY);
 }
 
+/* Values held as unsigned integers at their extremes: masks of all ones (glGetIntegerv clamps
+ * them to 2^31 - 1, the float queries do not) and a list name past 2^31 (read back negative, as
+ * Mesa's GLint of the name), queried while that list is being compiled. */
+static void dump_extremes(void) {
+  static const Pname kExtreme[] = {
+    {GL_STENCIL_WRITEMASK, "GL_STENCIL_WRITEMASK", 1},
+    {GL_STENCIL_VALUE_MASK, "GL_STENCIL_VALUE_MASK", 1},
+    {GL_LIST_INDEX, "GL_LIST_INDEX", 1},
+  };
+  static const GLuint kNames[] = {0xFFFFFFFFu, 0x80000000u, 0x7FFFFFFFu};
+  static const GLuint kMasks[] = {0xFFFFFFFFu, 0x80000001u, 0x7FFFFFFFu};
+  char phase[32];
+  for (int k = 0; k < 3; ++k) {
+    glStencilMask(kMasks[k]);
+    glStencilFunc(GL_ALWAYS, 0, kMasks[k]);
+    glNewList(kNames[k], GL_COMPILE);
+    snprintf(phase, sizeof phase, "extremes%d", k);
+    for (int p = 0; p < 3; ++p) dump_pname(phase, &kExtreme[p]);
+    glEndList();
+    glDeleteLists(kNames[k], 1);
+  }
+  glStencilMask(0xFFFFFFFFu);
+  glStencilFunc(GL_ALWAYS, 0, 0xFFFFFFFFu);
+  fprintf(out, "extremes: err %x\n", glGetError());
+}
+
 int main(int argc, char** argv) {
   ConfContext c;
   if (!conf_init(&c, argc, argv, 256, 192)) return 1;
@@ -307,6 +333,7 @@ int main(int argc, char** argv) {
   glInterleavedArrays(GL_T2F_C4UB_V3F, 0, arrays + 8);
   fprintf(out, "interleaved: err %x\n", glGetError());
   dump("interleaved", arrays);
+  dump_extremes();
   fclose(out);
   /* The drawing state the cells need, after the dumps changed it. */
   glDisable(GL_CULL_FACE);
