@@ -143,6 +143,7 @@ detail::Fragment reference_fragment(const DrawJob& job, const TriSetup& t, Worke
                                       q2 * (*v[2]->attr)[i]);
   }
   if (job.shade->texture) {
+    detail::fragment_texcoords(v, detail::texcoord_weights(v, w0, w1, t.inv_area, t.affine), frag);
     detail::FixedPoint p[3];
     for (int k = 0; k < 3; ++k) p[k] = {t.v[k]->sx, t.v[k]->sy};
     detail::texture_derivatives(v, p, x, y, job.fb->height, frag);

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "raster/texcoord.hpp"
+
 namespace shadelab::detail {
 
 inline constexpr int kSubpixelBits = 8;
@@ -36,41 +38,41 @@ inline bool owns_edge(FixedPoint a, FixedPoint b) {
   return dy < 0 || (dy == 0 && dx > 0);
 }
 
-// Perspective-correct projected texture coordinates (s / q, t / q) at any point, inside the
-// triangle or not, from its unnormalized barycentric weights (edge functions).
-inline void projected_texcoord_at(const WindowVertex* const v[3], double w0, double w1, double w2,
-                                  double& s, double& t) {
-  const double q0 = w0 * v[0]->inv_w, q1 = w1 * v[1]->inv_w, q2 = w2 * v[2]->inv_w;
-  auto at = [&](int slot) {
-    return q0 * (*v[0]->attr)[slot] + q1 * (*v[1]->attr)[slot] + q2 * (*v[2]->attr)[slot];
-  };
-  const double q = at(kTexCoord + 3);  // the common 1 / (q0 + q1 + q2) cancels out
-  s = at(kTexCoord) / q;
-  t = at(kTexCoord + 1) / q;
+/// The float weights of the oriented triangle `v` at a point with edge functions w0, w1
+/// (texcoord.hpp).
+inline FloatWeights texcoord_weights(const WindowVertex* const v[3], double w0, double w1, double inv_area,
+                                     bool affine) {
+  const float inv_w[3] = {v[0]->inv_w, v[1]->inv_w, v[2]->inv_w};
+  return float_weights(w0 * inv_area, w1 * inv_area, inv_w, affine);
+}
+
+/// Texture coordinate slot `slot` (kTexCoord + 0..3) at weights `w` (texcoord.hpp).
+inline float texcoord_at(const WindowVertex* const v[3], int slot, FloatWeights w) {
+  return texcoord_plane((*v[0]->attr)[slot], (*v[1]->attr)[slot], (*v[2]->attr)[slot], w);
+}
+
+/// The four texture coordinates of a fragment, in the fast pipeline's float arithmetic.
+inline void fragment_texcoords(const WindowVertex* const v[3], FloatWeights w, Fragment& frag) {
+  for (int i = 0; i < 4; ++i) frag.attr[kTexCoord + i] = texcoord_at(v, kTexCoord + i, w);
 }
 
 /// llvmpipe computes the level of detail once per 2x2 pixel quad of its own rows, which run
 /// from the top of the window down (GL's row height - 1 is its row 0): from the quad's
 /// top-left pixel to the pixel on its right and to the one below (lp_bld_sample.c's rho).
-/// Every pixel of the quad gets those differences, covered or not.
+/// Every pixel of the quad gets those differences, covered or not. The projected
+/// coordinates at those pixels are the fragments' own (texcoord.hpp), wherever they lie.
 inline void texture_derivatives(const WindowVertex* const v[3], const FixedPoint p[3], int x,
                                 int y, int height, Fragment& frag) {
-  const int left = x & ~1, top = height - 1 - ((height - 1 - y) & ~1);
-  auto coords = [&](int px, int py, double& s, double& t) {
+  const double inv_area = 1.0 / double(edge_function(p[0], p[1], p[2]));
+  const bool affine = v[0]->inv_w == v[1]->inv_w && v[1]->inv_w == v[2]->inv_w;
+  frag.texture_derivatives = quad_derivatives(x, y, height, [&](int px, int py) {
     const FixedPoint c{std::int64_t(px) * kSubpixelOne + kSubpixelOne / 2,
                        std::int64_t(py) * kSubpixelOne + kSubpixelOne / 2};
-    projected_texcoord_at(v, double(edge_function(p[1], p[2], c)), double(edge_function(p[2], p[0], c)),
-                          double(edge_function(p[0], p[1], c)), s, t);
-  };
-  double s0, t0, s1, t1, s2, t2;
-  coords(left, top, s0, t0);
-  coords(left + 1, top, s1, t1);
-  coords(left, top - 1, s2, t2);
-  TextureDerivatives& d = frag.texture_derivatives;
-  d.ds_dx = float(s1 - s0);
-  d.dt_dx = float(t1 - t0);
-  d.ds_dy = float(s2 - s0);
-  d.dt_dy = float(t2 - t0);
+    const FloatWeights w = texcoord_weights(v, double(edge_function(p[1], p[2], c)),
+                                            double(edge_function(p[2], p[0], c)), inv_area, affine);
+    return project_texcoord(texcoord_at(v, kTexCoord, w), texcoord_at(v, kTexCoord + 1, w),
+                            texcoord_at(v, kTexCoord + 3, w));
+  });
 }
 
 /// Window depth over a triangle: z2 + b0 (z0 - z2) + b1 (z1 - z2) in float arithmetic, in
@@ -146,7 +148,10 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
         frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
                                           q2 * (*v[2]->attr)[i]);
       }
-      if (texture_lod) texture_derivatives(v, p, x, y, height, frag);
+      if (texture_lod) {
+        fragment_texcoords(v, texcoord_weights(v, double(w0), double(w1), inv_area, affine), frag);
+        texture_derivatives(v, p, x, y, height, frag);
+      }
       ++covered;
       emit(frag);
     }

@@ -37,15 +37,20 @@ float wrap_coord(float s, int size, TextureWrap wrap) {
   return s - std::floor(s);
 }
 
-// Texel (i, j) of a level; j is ignored by 1D textures.
+// Texel (i, j) of a level in byte units (0 to 255; the border colour times 255); j is ignored
+// by 1D textures.
 glm::vec4 texel(const TextureLevel& l, int i, int j, const Texture& t) {
   i = wrap_index(i, l.width, t.wrap_s);
   j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, t.wrap_t);
-  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return t.border_color;
+  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return t.border_color * 255.0f;
   const std::uint8_t* p = &l.rgba[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4];
-  return glm::vec4(p[0], p[1], p[2], p[3]) / 255.0f;
+  return glm::vec4(p[0], p[1], p[2], p[3]);
 }
 
+glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w * (b - a); }
+
+// One level's filtered texel in byte units. The arithmetic, operation by operation, is what
+// the fast pipeline's samplers do on every SIMD target (fast/texture-inl.h): keep them equal.
 glm::vec4 sample_level(const Texture& t, int level, glm::vec2 st, bool linear) {
   const TextureLevel& l = t.levels[std::size_t(level)];
   const bool one_d = t.dimensions == 1;
@@ -60,12 +65,13 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec2 st, bool linear) {
   float uu = u - 0.5f;
   int i0 = int(std::floor(uu));
   float a = uu - std::floor(uu);
-  if (one_d) return (1 - a) * texel(l, i0, 0, t) + a * texel(l, i0 + 1, 0, t);
+  if (one_d) return lerp(texel(l, i0, 0, t), texel(l, i0 + 1, 0, t), a);
   float vv = v - 0.5f;
   int j0 = int(std::floor(vv));
   float b = vv - std::floor(vv);
-  return (1 - a) * (1 - b) * texel(l, i0, j0, t) + a * (1 - b) * texel(l, i0 + 1, j0, t) +
-         (1 - a) * b * texel(l, i0, j0 + 1, t) + a * b * texel(l, i0 + 1, j0 + 1, t);
+  const glm::vec4 top = lerp(texel(l, i0, j0, t), texel(l, i0 + 1, j0, t), a);
+  const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, t), texel(l, i0 + 1, j0 + 1, t), a);
+  return lerp(top, bottom, b);
 }
 
 // x = m 2^e with m in [0.5, 1) (frexp); 0, infinities and NaN count as 0 (llvmpipe replaces
@@ -160,6 +166,11 @@ float finite_texcoord(float v) {
 // later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR where the lod,
 // 0.5 fast_log2(rho2), is above 0); levels past the last one clamp.
 glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2) {
+  return sample_texture_bytes(t, st, rho2) / 255.0f;
+}
+
+// In byte units; sample_texture divides by 255 once at the end.
+glm::vec4 sample_texture_bytes(const Texture& t, glm::vec2 st, float rho2) {
   const TextureFilter f = t.min_filter;
   const bool linear_mip = f == TextureFilter::kNearestMipmapLinear || f == TextureFilter::kLinearMipmapLinear;
   const float lod = linear_mip ? 0.5f * fast_log2(rho2) : 0.0f;
@@ -172,8 +183,7 @@ glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2) {
   const int level = int(std::floor(lod));
   const float frac = lod - float(level);
   if (level >= last) return sample_level(t, last, st, linear_in_level);
-  return (1.0f - frac) * sample_level(t, level, st, linear_in_level) +
-         frac * sample_level(t, level + 1, st, linear_in_level);
+  return lerp(sample_level(t, level, st, linear_in_level), sample_level(t, level + 1, st, linear_in_level), frac);
 }
 
 glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm::vec4& f,
