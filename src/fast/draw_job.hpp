@@ -77,6 +77,27 @@ struct VaryingLayout {
 /// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
 
+/// How a textured draw samples, decided once per draw (plan.cpp) for the SIMD samplers
+/// (texture-inl.h): the texture's levels and parameters as sample_texture reads them.
+struct TexturePlan {
+  const Texture* texture = nullptr;  ///< complete; null: the draw is not textured
+  bool one_d = false;
+  /// A level of detail per quad is needed: mipmaps, or minification and magnification
+  /// filtering differently. Otherwise level 0 with the one filter.
+  bool lod = false;
+  bool mipmaps = false;
+  bool linear_mip = false;  ///< *_MIPMAP_LINEAR: two levels blended
+  bool mag_linear = false;  ///< GL_LINEAR magnification
+  bool min_linear = false;  ///< linear within a level when minified (GL_LINEAR, GL_LINEAR_MIPMAP_*)
+  TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
+  float width = 0.0f, height = 0.0f;  ///< level 0's
+  int last_level = 0;                 ///< Texture::last_level
+  float border[4] = {};               ///< the border colour in byte units
+  TextureEnvMode env = TextureEnvMode::kModulate;
+  TextureFormat format = TextureFormat::kRgba;
+  float env_color[4] = {};
+};
+
 /// What a draw needs from each stage, decided once per draw (plan.cpp).
 struct DrawPlan {
   VaryingLayout layout;
@@ -86,7 +107,8 @@ struct DrawPlan {
   bool flat = false;             ///< colours from the provoking vertex
   bool two_side = false;         ///< back-facing triangles use back colours / material
   bool scalar_fragments = false; ///< per-fragment reference operations (stencil, capture,
-                                 ///< textures, Phong the SIMD kernel does not cover)
+                                 ///< shadow maps, Phong the SIMD kernel does not cover)
+  TexturePlan texture;           ///< texturing on the SIMD path
   bool writes_color = true;      ///< some colour channel is written (or captured)
   bool fog = false;              ///< fogged colours (ShadeState::fog)
   detail::FogParams fog_params;

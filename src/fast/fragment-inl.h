@@ -23,7 +23,9 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "fast/block-inl.h"
 #include "fast/lighting-inl.h"
+#include "fast/texture-inl.h"
 #include "fast/triangle.hpp"
 #include "hwy/contrib/math/math-inl.h"
 #include "hwy/highway.h"
@@ -31,149 +33,6 @@
 HWY_BEFORE_NAMESPACE();
 namespace shadelab::fast::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
-
-using DD = hn::ScalableTag<double>;
-using DF = hn::Rebind<float, DD>;          // one float per double lane: one row of a block
-using DU = hn::Rebind<std::uint32_t, DD>;  // one RGBA8 pixel per lane
-using VD = hn::Vec<DD>;
-using VF = hn::Vec<DF>;
-
-// A block's rows side by side in one vector, row 0 in the lower lanes (one row on the scalar
-// target, whose vectors have one lane).
-#if HWY_TARGET == HWY_SCALAR
-inline constexpr int kRows = 1;
-template <class DH>
-using Block = DH;
-#else
-inline constexpr int kRows = 2;
-template <class DH>
-using Block = hn::Twice<DH>;
-#endif
-using DB = Block<DF>;
-using DUB = Block<DU>;
-using DIB = hn::RebindToSigned<DUB>;
-using VB = hn::Vec<DB>;
-using MB = hn::Mask<DB>;
-
-/// One row per half: row 0 low, row 1 high.
-template <class DH>
-HWY_INLINE hn::Vec<Block<DH>> join_rows(DH dh, hn::Vec<DH> row0, hn::Vec<DH> row1) {
-  (void)dh;
-#if HWY_TARGET == HWY_SCALAR
-  (void)row1;
-  return row0;
-#else
-  return hn::Combine(Block<DH>(), row1, row0);
-#endif
-}
-
-template <class DH>
-HWY_INLINE hn::Vec<DH> row_of(DH dh, hn::Vec<Block<DH>> v, int r) {
-#if HWY_TARGET == HWY_SCALAR
-  (void)dh, (void)r;
-  return v;
-#else
-  return r == 0 ? hn::LowerHalf(dh, v) : hn::UpperHalf(dh, v);
-#endif
-}
-
-/// Bit `r * Lanes(DD) + i` of a block's bits is lane i of row r.
-HWY_INLINE unsigned row_bits(unsigned bits, int r) {
-  const unsigned lanes = unsigned(hn::Lanes(DD()));
-  return (bits >> (unsigned(r) * lanes)) & ((1u << lanes) - 1u);
-}
-
-// Masks from and to bits. AVX-512 masks are bit registers: taken as they are, without the
-// round trip through bytes in memory that LoadMaskBits / StoreMaskBits take.
-template <class D>
-HWY_INLINE hn::Mask<D> mask_of_bits(D d, unsigned bits) {
-#if HWY_TARGET <= HWY_AVX3
-  (void)d;
-  return hn::Mask<D>{static_cast<decltype(hn::Mask<D>().raw)>(bits)};
-#else
-  const std::uint8_t bytes[8] = {std::uint8_t(bits), std::uint8_t(bits >> 8)};
-  return hn::LoadMaskBits(d, bytes);
-#endif
-}
-
-HWY_INLINE MB block_mask(unsigned bits) { return mask_of_bits(DB(), bits); }
-
-template <class D>
-HWY_INLINE unsigned bits_of_mask(D d, hn::Mask<D> m) {
-#if HWY_TARGET <= HWY_AVX3
-  (void)d;
-  return unsigned(m.raw);
-#else
-  std::uint8_t bytes[8] = {};
-  hn::StoreMaskBits(d, m, bytes);
-  return unsigned(bytes[0]) | unsigned(bytes[1]) << 8;
-#endif
-}
-
-HWY_INLINE unsigned block_bits(MB m) { return bits_of_mask(DB(), m); }
-
-/// The rows of a block from memory (each row's own address).
-template <class DH, typename T>
-HWY_INLINE hn::Vec<Block<DH>> load_rows(DH dh, T* const rows[kRows]) {
-  return join_rows(dh, hn::LoadU(dh, rows[0]), hn::LoadU(dh, rows[kRows - 1]));
-}
-
-/// Stores the lanes set in `bits` of each row.
-template <class DH, typename T>
-HWY_INLINE void store_rows(DH dh, hn::Vec<Block<DH>> v, unsigned bits, T* const rows[kRows]) {
-#if HWY_TARGET <= HWY_AVX3
-  // Masks are registers here: both rows stored under theirs, without branches on the bits
-  // (which a partly covered block's pattern makes hard to predict).
-  #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) hn::BlendedStore(row_of(dh, v, r), mask_of_bits(dh, row_bits(bits, r)), dh, rows[r]);
-#else
-  // Masks are built from bytes in memory here: whole rows (the interior of a triangle) are
-  // stored plainly, and empty rows not at all.
-  constexpr unsigned kAll = (1u << (kRows * hn::MaxLanes(DD()))) - 1u;
-  if (bits == kAll && hn::Lanes(DD()) == hn::MaxLanes(DD())) {
-    #pragma GCC unroll 4
-    for (int r = 0; r < kRows; ++r) hn::StoreU(row_of(dh, v, r), dh, rows[r]);
-    return;
-  }
-  #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) {
-    std::uint8_t b = std::uint8_t(row_bits(bits, r));
-    if (b) hn::BlendedStore(row_of(dh, v, r), mask_of_bits(dh, b), dh, rows[r]);
-  }
-#endif
-}
-
-/// A block's barycentric weights: b0, b1 of each row in doubles (exact_varying reads them),
-/// and the normalized perspective weights q0, q1 of the whole block in floats
-/// (reference_raster.inl's q0, q1: q_i = b_i / w_i, divided by their sum).
-struct Weights {
-  VD b0[kRows], b1[kRows];
-  VB f0, f1;
-};
-
-/// The float weights: b0, b1 rounded to float (f0, f1, which depth also reads), then (affine
-/// triangles aside) the perspective division in floats over the whole block: one float
-/// division where the reference's double arithmetic takes one per row. They differ from the
-/// reference's by a few float roundings, as the varyings computed from them already do
-/// (Plane).
-HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], const VD b1[kRows], VB f0,
-                                       VB f1) {
-  const DB db;
-  Weights w;
-  #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) w.b0[r] = b0[r], w.b1[r] = b1[r];
-  if (t.affine) {
-    w.f0 = f0, w.f1 = f1;
-    return w;
-  }
-  const VB f2 = hn::Sub(hn::Sub(hn::Set(db, 1.0f), f0), f1);
-  const VB q0 = hn::Mul(f0, hn::Set(db, t.v[0]->inv_w));
-  const VB q1 = hn::Mul(f1, hn::Set(db, t.v[1]->inv_w));
-  const VB q2 = hn::Mul(f2, hn::Set(db, t.v[2]->inv_w));
-  const VB inv = hn::Div(hn::Set(db, 1.0f), hn::Add(hn::Add(q0, q1), q2));
-  w.f0 = hn::Mul(q0, inv), w.f1 = hn::Mul(q1, inv);
-  return w;
-}
 
 /// Varying `k` at every lane, as the reference computes it: the perspective weights and the
 /// weighted sum in doubles.
@@ -246,6 +105,7 @@ struct TrianglePlanes {
   float uniform_color[4];
   Plane position[3], normal[3];
   Plane fog[1];  // the fog coordinate (never flat), when the draw is fogged
+  TexcoordPlanes texcoord;  // when the draw is textured
   // The opaque kernels' colour planes, in bytes: 255 c + kJustBelowHalf, whose truncation
   // (clamped to [0, 255]) is the byte (to_unorm8). Equal to the colour planes' bytes for one
   // colour over the triangle; otherwise within the same few float roundings.
@@ -288,6 +148,10 @@ HWY_INLINE void set_up_color_planes(const DrawJob& job, const TriSetup& t, Trian
 HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   out.ready = true;
   set_up_color_planes(job, t, out);
+  if (job.plan.texture.texture) {
+    out.texcoord = texcoord_planes(job, t);
+    out.uniform = false;  // the environment combines the unclamped colour
+  }
   if (!job.plan.fog) return;
   // Fog blends the unclamped colour (draw.cpp's shade_fragment): no clamped uniform colour.
   out.uniform = false;
@@ -299,8 +163,10 @@ struct Rgba {
   bool clamped = false;  // already in [0, 1] as clamp_unit leaves it
 };
 
-// Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp).
-HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w) {
+// Gouraud, flat or unlit colour: primary plus secondary (the colour sum, draw.cpp), or without
+// the secondary (a textured draw adds it after the texture environment).
+HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w,
+                             bool with_secondary = true) {
   Rgba out;
   if (planes.uniform) {
     #pragma GCC unroll 4
@@ -315,17 +181,18 @@ HWY_INLINE Rgba vertex_color(const TriSetup& t, const TrianglePlanes& planes, co
   }
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) out.c[c] = varying(t, planes, w, planes.color[c]);
-  if (!planes.has_secondary) return out;
+  if (!planes.has_secondary || !with_secondary) return out;
   #pragma GCC unroll 4
   for (int c = 0; c < 3; ++c) out.c[c] = hn::Add(out.c[c], varying(t, planes, w, planes.secondary[c]));
   return out;
 }
 
 /// Per-pixel Phong for lanes of any width: the interpolated eye position `p` and normal `n`,
-/// re-normalized, lit; out[0..3] = red, green, blue (secondary added when separate) and alpha.
+/// re-normalized, lit; out[0..3] = red, green, blue (secondary added when separate, or stored
+/// in `secondary` when given: zero when not separate) and alpha.
 template <class D>
 HWY_INLINE void phong_lanes(const DrawJob& job, const TriSetup& t, D d, const V3<D>& p, V3<D> n,
-                            hn::Vec<D> out[4]) {
+                            hn::Vec<D> out[4], hn::Vec<D>* secondary = nullptr) {
   V3<D> up{hn::Zero(d), hn::Zero(d), hn::Set(d, 1.0f)};
   n = normalize_or<Form::kPerPixel>(d, n, up, nullptr);
   bool back = !t.front && job.plan.two_side;
@@ -338,15 +205,23 @@ HWY_INLINE void phong_lanes(const DrawJob& job, const TriSetup& t, D d, const V3
   out[1] = lit.primary.y;
   out[2] = lit.primary.z;
   out[3] = hn::Set(d, m.alpha);
+  if (secondary) {
+    const bool separate = job.plan.lighting.separate_specular;
+    secondary[0] = separate ? lit.secondary.x : hn::Zero(d);
+    secondary[1] = separate ? lit.secondary.y : hn::Zero(d);
+    secondary[2] = separate ? lit.secondary.z : hn::Zero(d);
+    return;
+  }
   if (!job.plan.lighting.separate_specular) return;
   out[0] = hn::Add(out[0], lit.secondary.x);
   out[1] = hn::Add(out[1], lit.secondary.y);
   out[2] = hn::Add(out[2], lit.secondary.z);
 }
 
-// Per-pixel Phong for one block: the interpolated eye position and normal, lit.
+// Per-pixel Phong for one block: the interpolated eye position and normal, lit (the
+// secondary colour into `secondary` when given, as phong_lanes).
 HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes,
-                            const Weights& w) {
+                            const Weights& w, VB* secondary = nullptr) {
   const DB db;
   VB v[6];
   #pragma GCC unroll 4
@@ -355,7 +230,7 @@ HWY_INLINE Rgba phong_color(const DrawJob& job, const TriSetup& t, const Triangl
     v[3 + k] = varying(t, planes, w, planes.normal[k]);
   }
   Rgba out;
-  phong_lanes(job, t, db, V3<DB>{v[0], v[1], v[2]}, V3<DB>{v[3], v[4], v[5]}, out.c);
+  phong_lanes(job, t, db, V3<DB>{v[0], v[1], v[2]}, V3<DB>{v[3], v[4], v[5]}, out.c, secondary);
   return out;
 }
 
@@ -453,11 +328,6 @@ HWY_INLINE hn::Vec<DUB> to_unorm8(VB v) {
   return truncate_byte(hn::Add(hn::Mul(v, hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf)));
 }
 
-HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
-  const DUB dub;
-  hn::Vec<DUB> v = hn::And(hn::ShiftRightSame(px, 8 * c), hn::Set(dub, 0xffu));
-  return hn::ConvertTo(DB(), hn::BitCast(DIB(), v));
-}
 
 /// x / 255 for integers x in [0, 255], correctly rounded as the reference's division. With
 /// fused multiply-adds: q = x * (1/255) is within an ulp; its residual x - 255 q is exact in

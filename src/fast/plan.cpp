@@ -40,7 +40,7 @@ void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, 
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.texture.texture) {
     return BlockKernel::kGeneral;
   }
   if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
@@ -52,6 +52,29 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
     return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
   }
   return BlockKernel::kGeneral;
+}
+
+bool uses_mipmaps(TextureFilter f) { return f != TextureFilter::kNearest && f != TextureFilter::kLinear; }
+
+TexturePlan texture_plan(const ShadeState& shade) {
+  TexturePlan tp;
+  const Texture* t = shade.texture;  // draw_fast.cpp leaves only complete textures
+  if (!t) return tp;
+  tp.texture = t;
+  tp.one_d = t->dimensions == 1;
+  tp.mipmaps = uses_mipmaps(t->min_filter);
+  tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
+  tp.mag_linear = t->mag_filter == TextureFilter::kLinear;
+  tp.min_linear = t->min_filter == TextureFilter::kLinear || t->min_filter == TextureFilter::kLinearMipmapNearest ||
+                  t->min_filter == TextureFilter::kLinearMipmapLinear;
+  tp.lod = tp.mipmaps || tp.min_linear != tp.mag_linear;
+  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t;
+  tp.width = float(t->levels[0].width), tp.height = float(t->levels[0].height);
+  tp.last_level = t->last_level();
+  for (int c = 0; c < 4; ++c) tp.border[c] = t->border_color[c] * 255.0f, tp.env_color[c] = t->env_color[c];
+  tp.env = shade.texture_env;
+  tp.format = t->format;
+  return tp;
 }
 
 // The framebuffer cut by the scissor box, and whether blocks need lane masks: a scissor box
@@ -101,8 +124,8 @@ void make_plan(DrawJob& job) {
   bool simd_materials = simd_supports(shade.front) && (!p.two_side || simd_supports(shade.back));
   p.simd_vertex_lighting = p.vertex_lighting && !shadows && simd_materials;
   p.writes_color = writes_color(frag);
-  p.scalar_fragments = frag.stencil.enabled || frag.capture || shade.texture ||
-                       (p.phong && (shadows || !simd_materials));
+  p.scalar_fragments = frag.stencil.enabled || frag.capture || (p.phong && (shadows || !simd_materials));
+  p.texture = texture_plan(shade);
   p.fog = shade.fog.enabled;
   if (p.fog) p.fog_params = detail::fog_params(shade.fog);
   p.alpha_test = frag.alpha_test.enabled;

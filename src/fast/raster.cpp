@@ -93,25 +93,67 @@ struct GroupCounts {
 enum class Path { kInterior, kEdge, kScalar };
 
 // The interpolated colour channels [first, 4) of a block as the reference computes them
-// (exact_varying), primary plus secondary.
+// (exact_varying): primary plus secondary, or primary alone.
 HWY_INLINE void exact_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w, int first,
-                            Rgba& color) {
+                            Rgba& color, bool with_secondary = true) {
   for (int c = first; c < 4; ++c) color.c[c] = exact_varying(t, w, planes.color[c].k);
-  if (!planes.has_secondary) return;
+  if (!planes.has_secondary || !with_secondary) return;
   for (int c = first; c < 3; ++c) color.c[c] = hn::Add(color.c[c], exact_varying(t, w, planes.secondary[c].k));
 }
 
-// The colours of a block's lanes: Gouraud, flat or Phong, then fogged. Where a difference in
-// the last bit would change more than that bit of the result (the 8-bit alpha the alpha test
-// compares, the bytes a logic op combines), the interpolated colours are the reference's own
-// (flat and uniform colours and the exact planes already are).
+// What block_color needs of the block beyond its weights: where it is, its rows' edge values
+// (the texture's level of detail evaluates quads at rows the block does not hold) and the
+// lanes whose colours are used.
+struct BlockPlace {
+  int x, y;
+  const VD (*e)[3];
+  unsigned live;
+};
+
+// A textured block's colours (draw.cpp's shade_fragment): the primary colour, textured, then
+// the secondary colour added.
+HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes, const Weights& w,
+                               const BlockPlace& at) {
+  VB secondary[3] = {hn::Zero(DB()), hn::Zero(DB()), hn::Zero(DB())};
+  Rgba color;
+  const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform;
+  const bool exact_all = exact && job.frag->logic_op.enabled;
+  if (job.plan.phong) {
+    color = phong_color(job, t, planes, w, secondary);
+  } else {
+    color = vertex_color(t, planes, w, false);
+    if (exact && !t.flat) exact_color(t, planes, w, exact_all ? 0 : 3, color, false);
+  }
+  texture_block(job, t, planes.texcoord, w, at.x, at.y, at.e, block_mask(at.live), color.c);
+  color.clamped = false;
+  if (!job.plan.phong && !planes.has_secondary) return color;
+  #pragma GCC unroll 3
+  for (int c = 0; c < 3; ++c) {
+    if (!job.plan.phong) {
+      const Plane& p = planes.secondary[c];
+      secondary[c] = exact_all && !t.flat ? exact_varying(t, w, p.k) : varying(t, planes, w, p);
+    }
+    color.c[c] = hn::Add(color.c[c], secondary[c]);
+  }
+  return color;
+}
+
+// The colours of a block's lanes: Gouraud, flat or Phong, textured, then fogged. Where a
+// difference in the last bit would change more than that bit of the result (the 8-bit alpha
+// the alpha test compares, the bytes a logic op combines), the interpolated colours are the
+// reference's own (flat and uniform colours and the exact planes already are).
 HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, const VD b0[kRows],
-                            const VD b1[kRows], VB f0, VB f1, const VB* coverage) {
+                            const VD b1[kRows], VB f0, VB f1, const VB* coverage, const BlockPlace& at) {
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
-  Rgba color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
-  if (job.plan.exact_colors && !job.plan.phong && !t.flat && !planes.exact && !planes.uniform) {
-    exact_color(t, planes, w, job.frag->logic_op.enabled ? 0 : 3, color);
+  Rgba color;
+  if (job.plan.texture.texture) {
+    color = textured_color(job, t, planes, w, at);
+  } else {
+    color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
+    if (job.plan.exact_colors && !job.plan.phong && !t.flat && !planes.exact && !planes.uniform) {
+      exact_color(t, planes, w, job.frag->logic_op.enabled ? 0 : 3, color);
+    }
   }
   if (job.plan.fog) apply_fog(job.plan.fog_params, t, planes, w, color);
   if (coverage) {  // a smooth line's or point's (Mesa multiplies it in at the very end)
@@ -155,7 +197,7 @@ HWY_INLINE VB block_coverage(const detail::Coverage& c, int x, int y, unsigned& 
 // point's `coverage` multiplies the colour's alpha before the alpha test sees it.
 template <Path kPath>
 HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
-                           GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
+                           GroupCounts& counts, int x, int y, unsigned bits, const VD e[kRows][3], const VD b0[kRows],
                            const VD b1[kRows], VB f0, VB f1, VB z, const VB* coverage) {
   const DF df;
   const FragmentState& fs = *job.frag;
@@ -164,7 +206,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   unsigned passed = bits;
   Rgba color;
   if (job.plan.alpha_test) {
-    color = block_color(job, t, planes, b0, b1, f0, f1, coverage);
+    color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, bits});
     passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
   }
   if (fs.depth_test && passed) {
@@ -175,7 +217,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   counts.fragments += unsigned(std::popcount(bits));
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
-    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1, coverage);
+    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, passed});
     write_colors(fs, color, passed, g.color);
   }
   if constexpr (kPath == Path::kEdge) close_block(job, g);
@@ -310,7 +352,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
     kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else {
-    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z,
+    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z,
                       kCoverage ? &coverage : nullptr);
   }
 }

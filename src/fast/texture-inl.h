@@ -1,0 +1,406 @@
+// Texturing on the SIMD path, for one block of a triangle: the texture coordinates in the
+// float arithmetic of raster/texcoord.hpp, llvmpipe's level of detail per 2x2 quad, texels
+// gathered from the RGBA8 levels and filtered, and the texture environment. Each step is the
+// reference's (texture.cpp's sample_texture_bytes, apply_texture_env) operation by operation,
+// without fused multiply-adds, so that every target samples the texels the reference samples
+// and gives its colours bit for bit. Per-target code (Highway).
+#if defined(SHADELAB_FAST_TEXTURE_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SHADELAB_FAST_TEXTURE_INL_H_
+#undef SHADELAB_FAST_TEXTURE_INL_H_
+#else
+#define SHADELAB_FAST_TEXTURE_INL_H_
+#endif
+
+#include <algorithm>
+#include <cstdint>
+
+#include "fast/block-inl.h"
+#include "fast/triangle.hpp"
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace shadelab::fast::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// A triangle's texture coordinates s, t and q (r is not sampled): value at vertex 2 and the
+/// differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane).
+struct TexcoordPlanes {
+  float base[3], d0[3], d1[3];
+};
+
+HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t) {
+  static constexpr int kSlot[3] = {0, 1, 3};  // s, t, q
+  const int first = job.plan.layout.texcoord;
+  TexcoordPlanes p;
+  for (int i = 0; i < 3; ++i) {
+    const int k = first + kSlot[i];
+    const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
+    p.base[i] = a2, p.d0[i] = a0 - a2, p.d1[i] = a1 - a2;
+  }
+  return p;
+}
+
+/// texcoord.hpp's float_weights for lanes of any width: the screen weights f0, f1 (rounded to
+/// float) made perspective-correct (perspective_weights, for rows the block does not hold).
+template <class D>
+HWY_INLINE void float_weights(D d, const TriSetup& t, hn::Vec<D> f0, hn::Vec<D> f1, hn::Vec<D>& p0, hn::Vec<D>& p1) {
+  if (t.affine) {
+    p0 = f0, p1 = f1;
+    return;
+  }
+  const auto f2 = hn::Sub(hn::Sub(hn::Set(d, 1.0f), f0), f1);
+  const auto q0 = hn::Mul(f0, hn::Set(d, t.v[0]->inv_w));
+  const auto q1 = hn::Mul(f1, hn::Set(d, t.v[1]->inv_w));
+  const auto q2 = hn::Mul(f2, hn::Set(d, t.v[2]->inv_w));
+  const auto inv = hn::Div(hn::Set(d, 1.0f), hn::Add(hn::Add(q0, q1), q2));
+  p0 = hn::Mul(q0, inv), p1 = hn::Mul(q1, inv);
+}
+
+/// finite_texcoord: NaN to 0, magnitudes kept below 2^20.
+template <class D>
+HWY_INLINE hn::Vec<D> finite_coord(D d, hn::Vec<D> v) {
+  const auto limit = hn::Set(d, 1048576.0f), minus = hn::Set(d, -1048576.0f);
+  const auto below = hn::IfThenElse(hn::Lt(v, limit), v, limit);
+  return hn::IfThenElse(hn::Gt(v, minus), below, hn::IfThenElseZero(hn::Eq(v, v), minus));
+}
+
+/// (s / q, t / q) at weights p0, p1, made finite (texcoord.hpp's project_texcoord).
+template <class D>
+HWY_INLINE void project(D d, const TexcoordPlanes& tp, hn::Vec<D> p0, hn::Vec<D> p1, hn::Vec<D>& s, hn::Vec<D>& t) {
+  hn::Vec<D> c[3];
+  #pragma GCC unroll 3
+  for (int i = 0; i < 3; ++i) {
+    c[i] = hn::Add(hn::Add(hn::Set(d, tp.base[i]), hn::Mul(p0, hn::Set(d, tp.d0[i]))), hn::Mul(p1, hn::Set(d, tp.d1[i])));
+  }
+  s = finite_coord(d, hn::Div(c[0], c[2]));
+  t = finite_coord(d, hn::Div(c[1], c[2]));
+}
+
+/// The level-of-detail differences of each lane's quad (TextureDerivatives).
+struct QuadDerivatives {
+  VB ds_dx, dt_dx, ds_dy, dt_dy;
+};
+
+/// Where the block's two rows are one of llvmpipe's quads (an even framebuffer height: its
+/// quads are GL rows 2k and 2k + 1, a block's rows): the differences come from the block's own
+/// lanes, the top row (row 1) and its pairs of columns.
+HWY_INLINE QuadDerivatives quad_derivatives_in_block(VB s, VB t) {
+#if HWY_TARGET == HWY_SCALAR
+  (void)s, (void)t;
+  return {};
+#else
+  const DF df;
+  const VF s_top = row_of(df, s, 1), s_bottom = row_of(df, s, 0);
+  const VF t_top = row_of(df, t, 1), t_bottom = row_of(df, t, 0);
+  const VF ds_dx = hn::Sub(hn::DupOdd(s_top), hn::DupEven(s_top));
+  const VF dt_dx = hn::Sub(hn::DupOdd(t_top), hn::DupEven(t_top));
+  const VF ds_dy = hn::Sub(hn::DupEven(s_bottom), hn::DupEven(s_top));
+  const VF dt_dy = hn::Sub(hn::DupEven(t_bottom), hn::DupEven(t_top));
+  return {join_rows(df, ds_dx, ds_dx), join_rows(df, dt_dx, dt_dx), join_rows(df, ds_dy, ds_dy),
+          join_rows(df, dt_dy, dt_dy)};
+#endif
+}
+
+/// Any framebuffer height and target: each lane's quad corners evaluated where they are
+/// (texcoord.hpp's quad_derivatives): the edge functions moved there exactly, in doubles.
+HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const TriSetup& t, const TexcoordPlanes& tp,
+                                                     int x, int y, const VD e[kRows][3]) {
+  const DD dd;
+  const DF df;
+  const int height = job.fb->height;
+  const int lanes = int(hn::Lanes(dd));
+  // -1 in the lanes of odd columns: the quad's left column is one step left of them.
+  alignas(64) static constexpr double kOddColumns[8] = {0, -1, 0, -1, 0, -1, 0, -1};
+  const VD parity = lanes == 1 ? hn::Set(dd, -double(x & 1)) : hn::Load(dd, kOddColumns);
+  const VD inv_area = hn::Set(dd, t.inv_area);
+  VF out[4][kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const int row = y + r, top = height - 1 - ((height - 1 - row) & ~1);
+    VF s[3], tt[3];  // the quad's top-left, top-right and bottom-left corners
+    for (int corner = 0; corner < 3; ++corner) {
+      const VD dcol = hn::Add(parity, hn::Set(dd, corner == 1 ? 1.0 : 0.0));
+      const double drow = double(top - row - (corner == 2 ? 1 : 0));
+      VF f[2];
+      for (int k = 0; k < 2; ++k) {  // edge k at the corner: exact integers in doubles
+        const VD ax = hn::Set(dd, double(-t.dy[k] * detail::kSubpixelOne));
+        const VD ay = hn::Set(dd, double(t.dx[k] * detail::kSubpixelOne) * drow);
+        const VD edge = hn::Add(hn::Add(e[r][k], hn::Mul(dcol, ax)), ay);
+        f[k] = hn::DemoteTo(df, hn::Mul(edge, inv_area));
+      }
+      VF p0, p1;
+      float_weights(df, t, f[0], f[1], p0, p1);
+      project(df, tp, p0, p1, s[corner], tt[corner]);
+    }
+    out[0][r] = hn::Sub(s[1], s[0]);
+    out[1][r] = hn::Sub(tt[1], tt[0]);
+    out[2][r] = hn::Sub(s[2], s[0]);
+    out[3][r] = hn::Sub(tt[2], tt[0]);
+  }
+  return {join_rows(df, out[0][0], out[0][kRows - 1]), join_rows(df, out[1][0], out[1][kRows - 1]),
+          join_rows(df, out[2][0], out[2][kRows - 1]), join_rows(df, out[3][0], out[3][kRows - 1])};
+}
+
+/// texture_rho2: the larger squared length of the x and y differences in level 0's texels.
+HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
+  const DB db;
+  const VB w = hn::Set(db, tp.width), h = hn::Set(db, tp.height);
+  const VB sx = hn::Mul(d.ds_dx, w), sy = hn::Mul(d.ds_dy, w);
+  if (tp.one_d) {
+    const VB a = hn::Mul(sx, sx), b = hn::Mul(sy, sy);
+    return hn::IfThenElse(hn::Lt(a, b), b, a);
+  }
+  const VB tx = hn::Mul(d.dt_dx, h), ty = hn::Mul(d.dt_dy, h);
+  const VB a = hn::Add(hn::Mul(sx, sx), hn::Mul(tx, tx)), b = hn::Add(hn::Mul(sy, sy), hn::Mul(ty, ty));
+  return hn::IfThenElse(hn::Lt(a, b), b, a);
+}
+
+/// texture.cpp's fast_log2 (lp_build_fast_log2) for x >= 0: the exponent less one plus the
+/// mantissa in [1, 2); -128 for 0, infinities and NaN. (Subnormal x give another value below
+/// -126 than frexp's: every such level of detail is magnification all the same.)
+HWY_INLINE VB fast_log2(VB x) {
+  const DB db;
+  const DIB di;
+  const auto bits = hn::BitCast(di, x);
+  const auto exponent = hn::And(hn::ShiftRight<23>(bits), hn::Set(di, 0xff));
+  const VB mantissa = hn::BitCast(db, hn::Or(hn::And(bits, hn::Set(di, 0x7fffff)), hn::Set(di, 0x3f800000)));
+  const VB r = hn::Add(hn::ConvertTo(db, hn::Sub(exponent, hn::Set(di, 128))), mantissa);
+  const MB special = hn::Or(hn::Eq(x, hn::Zero(db)), hn::RebindMask(db, hn::Eq(exponent, hn::Set(di, 0xff))));
+  return hn::IfThenElse(special, hn::Set(db, -128.0f), r);
+}
+
+/// Each lane's levels and filter (texture.cpp's sample_texture_bytes): the lower level `lo`,
+/// the upper `hi` (equal to lo where one level is sampled) and the weight of the upper `frac`;
+/// `linear` lanes are filtered linearly within a level.
+struct LevelChoice {
+  hn::Vec<DIB> lo, hi;
+  VB frac;
+  MB linear;
+  bool two_levels;  // some lane blends two levels
+};
+
+HWY_INLINE MB filter_mask(bool linear) { return linear ? hn::FirstN(DB(), hn::Lanes(DB())) : hn::FirstN(DB(), 0); }
+
+HWY_INLINE LevelChoice choose_levels(const TexturePlan& tp, const QuadDerivatives& d) {
+  const DB db;
+  const DIB di;
+  const VB r2 = rho2(tp, d);
+  LevelChoice c;
+  c.lo = c.hi = hn::Zero(di);
+  c.frac = hn::Zero(db);
+  c.two_levels = false;
+  VB lod = hn::Zero(db);
+  if (tp.linear_mip) lod = hn::Mul(hn::Set(db, 0.5f), fast_log2(r2));
+  const MB minified = tp.linear_mip ? hn::Gt(lod, hn::Zero(db)) : hn::Gt(r2, hn::Set(db, 1.0f));
+  c.linear = tp.min_linear == tp.mag_linear ? filter_mask(tp.mag_linear)
+                                            : (tp.min_linear ? minified : hn::Not(minified));
+  if (!tp.mipmaps) return c;
+  const auto last = hn::Set(di, tp.last_level);
+  const auto minified_i = hn::RebindMask(di, minified);
+  if (!tp.linear_mip) {  // rounded_half_log2: the frexp exponent (biased exponent - 126), halved
+    const auto exponent = hn::And(hn::ShiftRight<23>(hn::BitCast(di, r2)), hn::Set(di, 0xff));
+    const auto half = hn::ShiftRight<1>(hn::Sub(exponent, hn::Set(di, 126)));
+    c.lo = c.hi = hn::IfThenElseZero(minified_i, hn::Min(hn::Max(half, hn::Zero(di)), last));
+    return c;
+  }
+  const VB floor = hn::Floor(lod);
+  const auto level = hn::ConvertTo(di, floor);
+  const auto below_last = hn::And(minified_i, hn::Lt(level, last));
+  c.lo = hn::IfThenElse(below_last, level, hn::IfThenElseZero(minified_i, last));
+  c.hi = hn::IfThenElse(below_last, hn::Add(level, hn::Set(di, 1)), c.lo);
+  c.frac = hn::IfThenElseZero(hn::RebindMask(db, below_last), hn::Sub(lod, floor));
+  c.two_levels = !hn::AllFalse(di, below_last);
+  return c;
+}
+
+/// wrap_coord, times the level's size: where in the level, in texels, a coordinate falls.
+HWY_INLINE VB texel_coord(VB s, int size, TextureWrap wrap) {
+  const DB db;
+  switch (wrap) {
+    case TextureWrap::kRepeat: s = hn::Sub(s, hn::Floor(s)); break;
+    case TextureWrap::kClamp: s = hn::Min(hn::Max(s, hn::Zero(db)), hn::Set(db, 1.0f)); break;
+    case TextureWrap::kClampToEdge: {
+      const float half = 0.5f / float(size);
+      s = hn::Min(hn::Max(s, hn::Set(db, half)), hn::Set(db, 1.0f - half));
+      break;
+    }
+  }
+  return hn::Mul(s, hn::Set(db, float(size)));
+}
+
+/// wrap_index for indices in [-1, size]: repeat wraps them, clamp-to-edge clamps them, and
+/// GL_CLAMP keeps them, marking those outside [0, size) in `border` (the border colour).
+HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, hn::Mask<DIB>& border) {
+  const DIB di;
+  const auto n = hn::Set(di, size);
+  switch (wrap) {
+    case TextureWrap::kRepeat:
+      i = hn::IfThenElse(hn::Lt(i, hn::Zero(di)), hn::Add(i, n), i);
+      return hn::IfThenElse(hn::Lt(i, n), i, hn::Sub(i, n));
+    case TextureWrap::kClampToEdge: return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, hn::Set(di, 1)));
+    case TextureWrap::kClamp: border = hn::Or(border, hn::Or(hn::Lt(i, hn::Zero(di)), hn::Not(hn::Lt(i, n))));
+  }
+  return i;
+}
+
+/// Texels (i, j) of a level in byte units (texture.cpp's texel), gathered from its RGBA8 words.
+HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, VB out[4]) {
+  const DIB di;
+  const DUB du;
+  hn::Mask<DIB> border = hn::FirstN(di, 0);
+  i = wrap_index(i, l.width, tp.wrap_s, border);
+  if (!tp.one_d) j = wrap_index(j, l.height, tp.wrap_t, border);
+  const auto index = hn::IfThenZeroElse(border, hn::Add(hn::Mul(j, hn::Set(di, l.width)), i));
+  const auto words = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
+  const bool any_border = !hn::AllFalse(di, border);
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) {
+    out[c] = channel(words, c);
+    if (any_border) out[c] = hn::IfThenElse(hn::RebindMask(DB(), border), hn::Set(DB(), tp.border[c]), out[c]);
+  }
+}
+
+/// a + w (b - a), the reference's lerp.
+HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
+
+/// One level's filtered texels in byte units (texture.cpp's sample_level): `linear` lanes
+/// blend four texels (two for 1D textures), the others take the nearest; the nearest never
+/// reads the border.
+HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, MB linear, VB out[4]) {
+  const DB db;
+  const DIB di;
+  const TextureLevel& l = tp.texture->levels[std::size_t(level)];
+  const VB u = texel_coord(s, l.width, tp.wrap_s);
+  const VB v = tp.one_d ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
+  const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
+  hn::Vec<DIB> i, j;
+  if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
+    i = hn::ConvertTo(di, hn::Floor(u));
+    j = tp.one_d ? hn::Zero(di) : hn::ConvertTo(di, hn::Floor(v));
+    if (tp.wrap_s != TextureWrap::kRepeat) i = hn::Min(i, hn::Set(di, l.width - 1));
+    if (tp.wrap_t != TextureWrap::kRepeat) j = hn::Min(j, hn::Set(di, l.height - 1));
+  }
+  if (!any_linear) return fetch(tp, l, i, j, out);
+  const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
+  const VB fu = hn::Floor(uu), fv = hn::Floor(vv);
+  const auto li = hn::RebindMask(di, linear);
+  i = all_linear ? hn::ConvertTo(di, fu) : hn::IfThenElse(li, hn::ConvertTo(di, fu), i);
+  if (tp.one_d) j = hn::Zero(di);  // 1D: one row, whatever the filter
+  else j = all_linear ? hn::ConvertTo(di, fv) : hn::IfThenElse(li, hn::ConvertTo(di, fv), j);
+  const VB a = hn::IfThenElseZero(linear, hn::Sub(uu, fu)), b = hn::IfThenElseZero(linear, hn::Sub(vv, fv));
+  const auto one = hn::Set(di, 1);
+  VB c00[4], c10[4];
+  fetch(tp, l, i, j, c00);
+  fetch(tp, l, hn::Add(i, one), j, c10);
+  if (tp.one_d) {
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
+    return;
+  }
+  VB c01[4], c11[4];
+  fetch(tp, l, i, hn::Add(j, one), c01);
+  fetch(tp, l, hn::Add(i, one), hn::Add(j, one), c11);
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(c00[c], c10[c], a), lerp(c01[c], c11[c], a), b);
+}
+
+/// The filtered texel of every `live` lane in [0, 1] (sample_texture): the levels each lane
+/// needs sampled one level at a time, then blended.
+HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, const QuadDerivatives* d, MB live, VB out[4]) {
+  const DB db;
+  const DIB di;
+  if (!d) {  // one level, one filter for every lane
+    sample_level(tp, 0, s, t, filter_mask(tp.mag_linear), out);
+  } else {
+    const LevelChoice c = choose_levels(tp, *d);
+    const auto live_i = hn::RebindMask(di, live);
+    const int first = hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(live_i, c.lo, hn::Set(di, 1 << 20))));
+    const int last = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElse(live_i, c.hi, hn::Set(di, -1))));
+    VB lo[4] = {hn::Zero(db), hn::Zero(db), hn::Zero(db), hn::Zero(db)}, hi[4] = {lo[0], lo[1], lo[2], lo[3]};
+    for (int level = first; level <= last; ++level) {
+      const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
+      if (hn::AllFalse(di, hn::And(live_i, hn::Or(is_lo, is_hi)))) continue;
+      VB texel[4];
+      sample_level(tp, level, s, t, c.linear, texel);
+      const MB lo_mask = hn::RebindMask(db, is_lo), hi_mask = hn::RebindMask(db, is_hi);
+      #pragma GCC unroll 4
+      for (int k = 0; k < 4; ++k) {
+        lo[k] = level == first ? texel[k] : hn::IfThenElse(lo_mask, texel[k], lo[k]);
+        hi[k] = level == first ? texel[k] : hn::IfThenElse(hi_mask, texel[k], hi[k]);
+      }
+    }
+    #pragma GCC unroll 4
+    for (int k = 0; k < 4; ++k) out[k] = c.two_levels ? lerp(lo[k], hi[k], c.frac) : lo[k];
+  }
+  #pragma GCC unroll 4
+  for (int k = 0; k < 4; ++k) out[k] = hn::Div(out[k], hn::Set(db, 255.0f));
+}
+
+/// apply_texture_env: the fragment's colour `f` combined with the texel `t` by the
+/// environment mode, as the texture's base format says (GL 1.1 table 3.22).
+HWY_INLINE void texture_env(const TexturePlan& tp, VB f[4], const VB t[4]) {
+  const DB db;
+  const bool has_color = tp.format != TextureFormat::kAlpha;
+  const bool has_alpha = tp.format == TextureFormat::kAlpha || tp.format == TextureFormat::kLuminanceAlpha ||
+                         tp.format == TextureFormat::kIntensity || tp.format == TextureFormat::kRgba;
+  const VB one = hn::Set(db, 1.0f);
+  switch (tp.env) {
+    case TextureEnvMode::kReplace:
+      if (has_color) f[0] = t[0], f[1] = t[1], f[2] = t[2];
+      if (has_alpha) f[3] = t[3];
+      return;
+    case TextureEnvMode::kModulate:
+      if (has_color) f[0] = hn::Mul(f[0], t[0]), f[1] = hn::Mul(f[1], t[1]), f[2] = hn::Mul(f[2], t[2]);
+      if (has_alpha) f[3] = hn::Mul(f[3], t[3]);
+      return;
+    case TextureEnvMode::kDecal:
+      if (tp.format == TextureFormat::kRgb) {
+        f[0] = t[0], f[1] = t[1], f[2] = t[2];
+      } else if (tp.format == TextureFormat::kRgba) {
+        const VB keep = hn::Sub(one, t[3]);
+        #pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) f[c] = hn::Add(hn::Mul(f[c], keep), hn::Mul(t[c], t[3]));
+      }
+      return;
+    case TextureEnvMode::kBlend: {
+      VB alpha = f[3];
+      if (tp.format == TextureFormat::kIntensity) {
+        alpha = hn::Add(hn::Mul(f[3], hn::Sub(one, t[3])), hn::Mul(hn::Set(db, tp.env_color[3]), t[3]));
+      } else if (has_alpha) {
+        alpha = hn::Mul(f[3], t[3]);
+      }
+      if (has_color) {
+        #pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) {
+          f[c] = hn::Add(hn::Mul(f[c], hn::Sub(one, t[c])), hn::Mul(hn::Set(db, tp.env_color[c]), t[c]));
+        }
+      }
+      f[3] = alpha;
+      return;
+    }
+  }
+}
+
+/// The block's fragments textured: `color` (the primary colour, unclamped) combined with the
+/// texel at each lane's coordinates. `e` are the rows' edge values, `w` their perspective
+/// weights; `live` the lanes whose colour is used.
+HWY_INLINE void texture_block(const DrawJob& job, const TriSetup& t, const TexcoordPlanes& planes, const Weights& w,
+                              int x, int y, const VD e[kRows][3], MB live, VB color[4]) {
+  const DB db;
+  const TexturePlan& tp = job.plan.texture;
+  VB s, tc;
+  project(db, planes, w.f0, w.f1, s, tc);
+  QuadDerivatives d;
+  if (tp.lod) {
+    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc)
+                                              : quad_derivatives_anywhere(job, t, planes, x, y, e);
+  }
+  VB texel[4];
+  sample_texture(tp, s, tc, tp.lod ? &d : nullptr, live, texel);
+  texture_env(tp, color, texel);
+}
+
+}  // namespace shadelab::fast::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // SHADELAB_FAST_TEXTURE_INL_H_

@@ -1,0 +1,222 @@
+// Texturing on the fast pipeline's SIMD path against the reference (texture-inl.h against
+// texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode, base
+// format and environment mode, 1D and 2D, mipmapped or not, on floors and walls seen in
+// perspective (every mipmap level in one picture), orthographically, and with projective
+// coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
+// fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
+// RGBA texture, unlit, opaque) the pictures must be identical: the samplers must pick and
+// filter the same texels in the same arithmetic. Otherwise colours within 1/255, as for every
+// other state.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <random>
+#include <sstream>
+
+#include "differential.hpp"
+#include "fast/simd_targets.hpp"
+
+namespace shadelab {
+namespace {
+
+// A texture of random size (1 to 256 a side, any aspect), noisy checkerboard texels, every
+// parameter random; mipmapped when the filter needs it (and sometimes otherwise).
+std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d) {
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  auto t = std::make_shared<Texture>();
+  TextureLevel level;
+  t->dimensions = one_d ? 1 : 2;
+  level.width = 1 << pick(0, 8);
+  level.height = one_d ? 1 : 1 << pick(0, 8);
+  const int squares = 1 << pick(0, 4);
+  for (int j = 0; j < level.height; ++j) {
+    for (int i = 0; i < level.width; ++i) {
+      const bool on = ((i * squares / level.width) + (j * squares / level.height)) & 1;
+      for (int c = 0; c < 4; ++c) level.rgba.push_back(std::uint8_t(on ? pick(150, 255) : pick(0, 100)));
+    }
+  }
+  t->levels.push_back(level);
+  t->min_filter = TextureFilter(pick(0, 5));
+  t->mag_filter = pick(0, 1) ? TextureFilter::kNearest : TextureFilter::kLinear;
+  if (t->min_filter != TextureFilter::kNearest && t->min_filter != TextureFilter::kLinear) {
+    generate_mipmaps(*t);
+  } else if (pick(0, 3) == 0) {
+    generate_mipmaps(*t);
+  }
+  t->wrap_s = TextureWrap(pick(0, 2));
+  t->wrap_t = TextureWrap(pick(0, 2));
+  t->format = TextureFormat(pick(0, 5));
+  t->border_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+  t->env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+  return t;
+}
+
+struct TexturedScene {
+  Framebuffer initial;
+  std::vector<test::RandomDraw> draws;
+  bool exact = false;  // the texel is the colour: pictures must be identical
+};
+
+// A floor receding to the horizon, a wall turned away, or a face-on quad, with texture
+// coordinates repeated up to 64 times (or a few texels magnified), projective sometimes.
+TexturedScene textured_scene(unsigned seed) {
+  std::mt19937 rng(seed);
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  auto real = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+  TexturedScene scene;
+  const int width = pick(0, 3) == 0 ? pick(1, 40) : pick(40, 300);
+  const int height = pick(0, 3) == 0 ? pick(1, 40) : pick(40, 220);
+  scene.initial.resize(width, height);
+  scene.initial.clear_color({0.1f, 0.2f, 0.3f, 1.0f});
+  scene.initial.clear_depth(1.0f);
+  const int count = pick(1, 3);
+  scene.exact = pick(0, 2) == 0;
+  for (int k = 0; k < count; ++k) {
+    test::RandomDraw d;
+    d.texture = random_texture(rng, pick(0, 4) == 0);
+    const int shape = pick(0, 2);
+    const float repeat = pick(0, 2) == 0 ? real(0.05f, 1.5f) : real(1.0f, 64.0f);
+    const float s0 = real(-2.0f, 2.0f), t0 = real(-2.0f, 2.0f);
+    const float aspect = float(width) / float(height);
+    if (shape == 2) {
+      d.projection = glm::ortho(-aspect, aspect, -1.0f, 1.0f, -2.0f, 2.0f);
+      const float x0 = real(-1.5f, 0.5f), y0 = real(-1.5f, 0.5f), x1 = x0 + real(0.3f, 2.5f), y1 = y0 + real(0.3f, 2.5f);
+      d.positions = {{x0, y0, 0, 1}, {x1, y0, 0, 1}, {x1, y1, 0, 1}, {x0, y1, 0, 1}};
+    } else {
+      d.projection = glm::perspective(glm::radians(real(30.0f, 90.0f)), aspect, 0.1f, 200.0f);
+      const float far = -real(5.0f, 150.0f);
+      if (shape == 0) {  // floor
+        const float y = -real(0.3f, 2.0f);
+        d.positions = {{-20, y, -0.5f, 1}, {20, y, -0.5f, 1}, {20, y, far, 1}, {-20, y, far, 1}};
+      } else {  // wall turned away
+        const float x = real(-1.0f, 1.0f);
+        d.positions = {{x - 1, -1, -2, 1}, {x + 1, -1, -2, 1}, {x + 20, 1.5f, far, 1}, {x - 1, 1.5f, -2, 1}};
+      }
+    }
+    const bool projective = pick(0, 3) == 0;
+    const glm::vec2 st[4] = {{s0, t0}, {s0 + repeat, t0}, {s0 + repeat, t0 + repeat}, {s0, t0 + repeat}};
+    for (int i = 0; i < 4; ++i) {
+      const float q = projective ? real(0.3f, 3.0f) : 1.0f;
+      d.texcoords.push_back({st[i].x * q, st[i].y * q, 0.0f, q});
+      d.colors.push_back({real(0, 1), real(0, 1), real(0, 1), real(0.2f, 1)});
+    }
+    d.triangles = {{0, 1, 2}, {0, 2, 3}};
+    if (pick(0, 1)) d.triangles = {{1, 2, 3}, {1, 3, 0}};
+    d.viewport = {0, 0, width, height, 0.0f, 1.0f};
+    d.shade.lighting = false;
+    d.shade.texture = d.texture.get();
+    d.frag.depth_test = pick(0, 1);
+    if (scene.exact) {
+      d.texture->format = TextureFormat::kRgba;
+      d.shade.texture_env = TextureEnvMode::kReplace;
+    } else {
+      d.shade.texture_env = TextureEnvMode(pick(0, 3));
+      d.shade.shading = pick(0, 3) == 0 ? ShadingMode::kFlat : ShadingMode::kGouraud;
+      if (pick(0, 2) == 0) d.frag.blend = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
+      if (pick(0, 3) == 0) d.frag.alpha_test = {true, CompareFunc::kGreater, real(0.2f, 0.8f)};
+    }
+    scene.draws.push_back(std::move(d));
+  }
+  return scene;
+}
+
+std::string identical(const Framebuffer& fast, const Framebuffer& ref) {
+  std::ostringstream out;
+  int shown = 0;
+  for (int y = 0; y < ref.height; ++y) {
+    for (int x = 0; x < ref.width; ++x) {
+      const std::size_t i = std::size_t(y) * std::size_t(ref.width) + std::size_t(x);
+      if (std::memcmp(&fast.color[i * 4], &ref.color[i * 4], 4) == 0 &&
+          std::memcmp(&fast.depth[i], &ref.depth[i], 4) == 0) {
+        continue;
+      }
+      if (shown++ < 4) {
+        out << "(" << x << "," << y << ") ";
+        for (int c = 0; c < 4; ++c) out << int(fast.color[i * 4 + c]) << "/" << int(ref.color[i * 4 + c]) << " ";
+        out << "\n";
+      }
+    }
+  }
+  if (shown) out << shown << " pixels differ";
+  return out.str();
+}
+
+void check_scenes(unsigned first, unsigned last, PipelineContext& context, const std::string& target) {
+  int exact_scenes = 0;
+  for (unsigned seed = first; seed < last; ++seed) {
+    const TexturedScene scene = textured_scene(seed);
+    const test::Result ref = test::render(scene.initial, scene.draws, nullptr);
+    const test::Result fast = test::render(scene.initial, scene.draws, &context);
+    const std::string diff = scene.exact ? identical(fast.fb, ref.fb) : test::compare_buffers(fast.fb, ref.fb);
+    ASSERT_EQ(diff, "") << "seed " << seed << " (" << scene.initial.width << "x" << scene.initial.height << ", "
+                        << (scene.exact ? "identical" : "within 1/255") << "), target " << target;
+    exact_scenes += scene.exact;
+  }
+  EXPECT_GT(exact_scenes, int(last - first) / 5);
+}
+
+TEST(TextureDifferential, TexturedScenesMatchTheReference) {
+  PipelineContext one(1), two(2);
+  check_scenes(1, 250, one, "best");
+  check_scenes(250, 400, two, "best");
+}
+
+TEST(TextureDifferential, EverySimdTargetSamplesAsTheReference) {
+  PipelineContext two(2);
+  for (const std::string& target : fast::available_simd_targets()) {
+    ASSERT_TRUE(fast::force_simd_target(target));
+    check_scenes(1000, 1100, two, target);
+    if (HasFatalFailure()) break;
+  }
+  fast::force_simd_target("");
+}
+
+// The scenes above must reach what they are for: minified and magnified pixels, several
+// mipmap levels in one picture, quads across odd-height blocks. A floor of a 256 x 256
+// mipmapped texture in a 64 x 63 framebuffer shows all of it; the fast path's picture must
+// equal the reference's there too, with each minification filter.
+TEST(TextureDifferential, FloorThroughEveryLevelOnAnOddHeight) {
+  PipelineContext two(2);
+  for (int filter = 2; filter <= 5; ++filter) {
+    test::RandomDraw d;
+    d.texture = std::make_shared<Texture>();
+    TextureLevel level;
+    level.width = level.height = 256;
+    for (int j = 0; j < 256; ++j) {
+      for (int i = 0; i < 256; ++i) {
+        const std::uint8_t v = ((i / 16 + j / 16) & 1) ? 230 : 20;
+        level.rgba.insert(level.rgba.end(), {v, std::uint8_t(i), std::uint8_t(j), 255});
+      }
+    }
+    d.texture->levels.push_back(level);
+    generate_mipmaps(*d.texture);
+    d.texture->min_filter = TextureFilter(filter);
+    d.shade.texture = d.texture.get();
+    d.shade.texture_env = TextureEnvMode::kReplace;
+    d.shade.lighting = false;
+    d.projection = glm::perspective(glm::radians(60.0f), 64.0f / 63.0f, 0.1f, 200.0f);
+    d.positions = {{-40, -1, -0.5f, 1}, {40, -1, -0.5f, 1}, {40, -1, -160, 1}, {-40, -1, -160, 1}};
+    d.texcoords = {{0, 0, 0, 1}, {40, 0, 0, 1}, {40, 40, 0, 1}, {0, 40, 0, 1}};
+    d.triangles = {{0, 1, 2}, {0, 2, 3}};
+    d.viewport = {0, 0, 64, 63, 0.0f, 1.0f};
+    Framebuffer initial;
+    initial.resize(64, 63);
+    const std::vector<test::RandomDraw> draws = {d};
+    const test::Result ref = test::render(initial, draws, nullptr);
+    const test::Result fast = test::render(initial, draws, &two);
+    EXPECT_EQ(identical(fast.fb, ref.fb), "") << "filter " << filter;
+    // Distinct colours in the picture: texels from several levels (a single level's nearest
+    // texels would give the checkerboard's two).
+    std::vector<std::uint32_t> colours;
+    for (std::size_t i = 0; i < ref.fb.color.size(); i += 4) {
+      std::uint32_t c;
+      std::memcpy(&c, &ref.fb.color[i], 4);
+      colours.push_back(c);
+    }
+    std::sort(colours.begin(), colours.end());
+    EXPECT_GT(std::unique(colours.begin(), colours.end()) - colours.begin(), 40) << "filter " << filter;
+  }
+}
+
+}  // namespace
+}  // namespace shadelab
