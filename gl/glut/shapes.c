@@ -1,12 +1,13 @@
-/* GLUT's solid shapes as OpenGL 1.1 client code: GL_TRIANGLES with per-vertex normals,
- * counter-clockwise from outside. Orientations follow GLUT (sphere, cone and torus around z).
- * It only calls gl* functions, so it runs on libshadelab-gl or Mesa; it keeps no state. */
+/* GLUT's round shapes as OpenGL 1.1 client code: glutSolid/Wire Sphere, Cone and Torus, with
+ * the geometry of freeglut 3 (the vertices, normals, primitives, winding and drawing order that
+ * Debian's libglut gives), plus glutSolidCube. Solids are GL_TRIANGLE_STRIPs, counter-clockwise
+ * from outside; wire shapes are the lines between the same vertices, with the same normals.
+ * It only calls gl* functions, so it runs on libshadelab-gl or Mesa; it keeps no state.
+ * The polyhedra are in polyhedra.c, the teapot in teapot.c. */
 #include <math.h>
 
 #include <GL/gl.h>
 #include <GL/shadelab_glut.h>
-
-#include "teapot_mesh.h"
 
 #define SHADELAB_PI 3.14159265358979323846
 
@@ -19,104 +20,209 @@ static void emit(const ShapeVertex* v) {
   glVertex3f(v->p[0], v->p[1], v->p[2]);
 }
 
+/* cos and sin of the angle 2 pi k / n for 0 <= k <= |n|; n < 0 turns clockwise (seen from the
+ * positive axis). k = 0 and k = |n| give exactly (1, 0), so that a closed ring's seam vertices
+ * coincide bit for bit. */
+static void ring_angle(int k, int n, double* c, double* s) {
+  if (k == 0 || k == (n < 0 ? -n : n)) {
+    *c = 1.0, *s = 0.0;
+    return;
+  }
+  double a = 2.0 * SHADELAB_PI * k / n;
+  *c = cos(a), *s = sin(a);
+}
+
+/* ---- Sphere -------------------------------------------------------------------------------- */
+
+/* Vertex `j` of ring `i` of a sphere: ring 0 is the pole at +z, ring `stacks` the pole at -z,
+ * rings equally spaced in the polar angle; slices turn clockwise seen from +z, slice 0 on +x.
+ * The normal is the unit direction. */
+static ShapeVertex sphere_vertex(double radius, GLint slices, GLint stacks, GLint i, GLint j) {
+  double cos_theta, sin_theta, cos_phi = 1.0, sin_phi = 0.0;
+  ring_angle(j, -slices, &cos_theta, &sin_theta);
+  if (i == stacks) {
+    cos_phi = -1.0;
+  } else if (i > 0) {
+    cos_phi = cos(SHADELAB_PI * i / stacks), sin_phi = sin(SHADELAB_PI * i / stacks);
+  }
+  const double d[3] = {cos_theta * sin_phi, sin_theta * sin_phi, cos_phi};
+  ShapeVertex v;
+  for (int k = 0; k < 3; ++k) v.n[k] = (float)d[k], v.p[k] = (float)(radius * d[k]);
+  return v;
+}
+
+void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks) {
+  if (slices < 1 || stacks < 2) return;
+  /* One strip per band between rings i and i + 1, alternating the lower and the upper ring and
+   * closing on slice 0; the bands at the poles repeat the pole vertex. */
+  for (GLint i = 0; i < stacks; ++i) {
+    glBegin(GL_TRIANGLE_STRIP);
+    for (GLint j = 0; j <= slices; ++j) {
+      const GLint jj = j == slices ? 0 : j;
+      ShapeVertex lower = sphere_vertex(radius, slices, stacks, i + 1, jj);
+      ShapeVertex upper = sphere_vertex(radius, slices, stacks, i, jj);
+      emit(&lower);
+      emit(&upper);
+    }
+    glEnd();
+  }
+}
+
+void glutWireSphere(GLdouble radius, GLint slices, GLint stacks) {
+  if (slices < 1 || stacks < 2) return;
+  for (GLint j = 0; j < slices; ++j) { /* the meridians, pole to pole */
+    glBegin(GL_LINE_STRIP);
+    for (GLint i = 0; i <= stacks; ++i) {
+      ShapeVertex v = sphere_vertex(radius, slices, stacks, i, j);
+      emit(&v);
+    }
+    glEnd();
+  }
+  for (GLint i = 1; i < stacks; ++i) { /* then the parallels, top down */
+    glBegin(GL_LINE_LOOP);
+    for (GLint j = 0; j < slices; ++j) {
+      ShapeVertex v = sphere_vertex(radius, slices, stacks, i, j);
+      emit(&v);
+    }
+    glEnd();
+  }
+}
+
+/* ---- Cone ---------------------------------------------------------------------------------- */
+
+/* Vertex `j` of ring `i` of a cone's side: ring 0 is the base's rim at z = 0, ring `stacks` the
+ * apex at z = height (a ring of coincident vertices, one normal per slice); slices turn clockwise
+ * seen from +z. Side normals lean up by the cone's half angle. */
+static ShapeVertex cone_side(double base, double height, GLint slices, GLint stacks, GLint i,
+                             GLint j) {
+  double c, s;
+  ring_angle(j, -slices, &c, &s);
+  const double length = sqrt(base * base + height * height);
+  const double r = base * (stacks - i) / stacks;
+  ShapeVertex v = {
+      {(float)(c * r), (float)(s * r), (float)(height * i / stacks)},
+      {(float)(c * height / length), (float)(s * height / length), (float)(base / length)}};
+  return v;
+}
+
+/* Vertex `j` of the base's rim, facing -z. */
+static ShapeVertex cone_rim(double base, GLint slices, GLint j) {
+  double c, s;
+  ring_angle(j, -slices, &c, &s);
+  ShapeVertex v = {{(float)(c * base), (float)(s * base), 0.0f}, {0.0f, 0.0f, -1.0f}};
+  return v;
+}
+
+void glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks) {
+  if (slices < 1 || stacks < 1 || !(base * base + height * height > 0.0)) return;
+  const ShapeVertex centre = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}};
+  glBegin(GL_TRIANGLE_STRIP); /* the base: the centre and the rim in turn */
+  for (GLint j = 0; j <= slices; ++j) {
+    ShapeVertex rim = cone_rim(base, slices, j == slices ? 0 : j);
+    emit(&centre);
+    emit(&rim);
+  }
+  glEnd();
+  for (GLint i = 0; i < stacks; ++i) { /* the side, one strip per stack, bottom up */
+    glBegin(GL_TRIANGLE_STRIP);
+    for (GLint j = 0; j <= slices; ++j) {
+      const GLint jj = j == slices ? 0 : j;
+      ShapeVertex below = cone_side(base, height, slices, stacks, i, jj);
+      ShapeVertex above = cone_side(base, height, slices, stacks, i + 1, jj);
+      emit(&below);
+      emit(&above);
+    }
+    glEnd();
+  }
+}
+
+void glutWireCone(GLdouble base, GLdouble height, GLint slices, GLint stacks) {
+  if (slices < 1 || stacks < 1 || !(base * base + height * height > 0.0)) return;
+  glBegin(GL_LINES); /* one line per slice from the rim to the apex */
+  for (GLint j = 0; j < slices; ++j) {
+    ShapeVertex rim = cone_side(base, height, slices, stacks, 0, j);
+    ShapeVertex apex = cone_side(base, height, slices, stacks, stacks, j);
+    emit(&rim);
+    emit(&apex);
+  }
+  glEnd();
+  for (GLint i = 0; i < stacks; ++i) { /* a circle per stack, the rim first; none at the apex */
+    glBegin(GL_LINE_LOOP);
+    for (GLint j = 0; j < slices; ++j) {
+      ShapeVertex v = cone_side(base, height, slices, stacks, i, j);
+      emit(&v);
+    }
+    glEnd();
+  }
+}
+
+/* ---- Torus --------------------------------------------------------------------------------- */
+
+/* Vertex `i` of ring `j` of a torus around the z axis: rings turn counter-clockwise around z
+ * (ring 0 on +x), and each ring's vertices clockwise around the tube (vertex 0 outermost).
+ * The normal points away from the tube's centre line. */
+static ShapeVertex torus_vertex(double inner, double outer, GLint sides, GLint rings, GLint i,
+                                GLint j) {
+  double cos_psi, sin_psi, cos_phi, sin_phi;
+  ring_angle(j, rings, &cos_psi, &sin_psi);
+  ring_angle(i, -sides, &cos_phi, &sin_phi);
+  const double r = outer + cos_phi * inner;
+  ShapeVertex v = {{(float)(cos_psi * r), (float)(sin_psi * r), (float)(sin_phi * inner)},
+                   {(float)(cos_psi * cos_phi), (float)(sin_psi * cos_phi), (float)sin_phi}};
+  return v;
+}
+
+void glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings) {
+  if (sides < 2 || rings < 2) return;
+  /* One strip per side: around the axis between tube vertex i and the next. */
+  for (GLint i = 0; i < sides; ++i) {
+    const GLint next = i + 1 == sides ? 0 : i + 1;
+    glBegin(GL_TRIANGLE_STRIP);
+    for (GLint j = 0; j <= rings; ++j) {
+      const GLint jj = j == rings ? 0 : j;
+      ShapeVertex a = torus_vertex(innerRadius, outerRadius, sides, rings, i, jj);
+      ShapeVertex b = torus_vertex(innerRadius, outerRadius, sides, rings, next, jj);
+      emit(&a);
+      emit(&b);
+    }
+    glEnd();
+  }
+}
+
+void glutWireTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings) {
+  if (sides < 2 || rings < 2) return;
+  for (GLint j = 0; j < rings; ++j) { /* the circles around the tube */
+    glBegin(GL_LINE_LOOP);
+    for (GLint i = 0; i < sides; ++i) {
+      ShapeVertex v = torus_vertex(innerRadius, outerRadius, sides, rings, i, j);
+      emit(&v);
+    }
+    glEnd();
+  }
+  for (GLint i = 0; i < sides; ++i) { /* then the circles around the axis */
+    glBegin(GL_LINE_LOOP);
+    for (GLint j = 0; j < rings; ++j) {
+      ShapeVertex v = torus_vertex(innerRadius, outerRadius, sides, rings, i, j);
+      emit(&v);
+    }
+    glEnd();
+  }
+}
+
+/* ---- Cube ---------------------------------------------------------------------------------- */
+
 static void triangle(const ShapeVertex* a, const ShapeVertex* b, const ShapeVertex* c) {
   emit(a);
   emit(b);
   emit(c);
 }
 
-/* A quad a, b, c, d (counter-clockwise) as triangles (a, b, c), (a, c, d); `skip_first` /
- * `skip_second` leave out a triangle that collapses at a pole or apex. */
-static void quad(const ShapeVertex* a, const ShapeVertex* b, const ShapeVertex* c,
-                 const ShapeVertex* d, int skip_first, int skip_second) {
-  if (!skip_first) triangle(a, b, c);
-  if (!skip_second) triangle(a, c, d);
-}
-
-static ShapeVertex sphere_vertex(double radius, double phi, double theta) {
-  ShapeVertex v;
-  double x = sin(phi) * cos(theta), y = sin(phi) * sin(theta), z = cos(phi);
-  v.n[0] = (float)x, v.n[1] = (float)y, v.n[2] = (float)z;
-  v.p[0] = (float)(radius * x), v.p[1] = (float)(radius * y), v.p[2] = (float)(radius * z);
-  return v;
-}
-
-void glutSolidSphere(GLdouble radius, GLint slices, GLint stacks) {
-  if (slices < 3 || stacks < 2) return;
-  glBegin(GL_TRIANGLES);
-  for (GLint j = 0; j < stacks; ++j) {
-    double phi0 = SHADELAB_PI * j / stacks, phi1 = SHADELAB_PI * (j + 1) / stacks;
-    for (GLint i = 0; i < slices; ++i) {
-      double th0 = 2.0 * SHADELAB_PI * i / slices, th1 = 2.0 * SHADELAB_PI * (i + 1) / slices;
-      ShapeVertex a = sphere_vertex(radius, phi0, th0), b = sphere_vertex(radius, phi1, th0);
-      ShapeVertex c = sphere_vertex(radius, phi1, th1), d = sphere_vertex(radius, phi0, th1);
-      quad(&a, &b, &c, &d, j == stacks - 1, j == 0);
-    }
-  }
-  glEnd();
-}
-
-static ShapeVertex cone_side(double base, double height, double z_frac, double theta) {
-  ShapeVertex v;
-  double len = sqrt(base * base + height * height);
-  double r = base * (1.0 - z_frac);
-  v.p[0] = (float)(r * cos(theta)), v.p[1] = (float)(r * sin(theta)), v.p[2] = (float)(height * z_frac);
-  v.n[0] = (float)(cos(theta) * height / len), v.n[1] = (float)(sin(theta) * height / len);
-  v.n[2] = (float)(base / len);
-  return v;
-}
-
-void glutSolidCone(GLdouble base, GLdouble height, GLint slices, GLint stacks) {
-  if (slices < 3 || stacks < 1 || !(base * base + height * height > 0.0)) return;
-  glBegin(GL_TRIANGLES);
-  ShapeVertex centre = {{0.0f, 0.0f, 0.0f}, {0.0f, 0.0f, -1.0f}};
-  for (GLint i = 0; i < slices; ++i) {
-    double th0 = 2.0 * SHADELAB_PI * i / slices, th1 = 2.0 * SHADELAB_PI * (i + 1) / slices;
-    ShapeVertex p0 = cone_side(base, height, 0.0, th0), p1 = cone_side(base, height, 0.0, th1);
-    p0.n[0] = p0.n[1] = p1.n[0] = p1.n[1] = 0.0f;
-    p0.n[2] = p1.n[2] = -1.0f;
-    triangle(&centre, &p1, &p0); /* the base, facing -z */
-    for (GLint k = 0; k < stacks; ++k) {
-      double z0 = (double)k / stacks, z1 = (double)(k + 1) / stacks;
-      ShapeVertex a = cone_side(base, height, z0, th0), b = cone_side(base, height, z0, th1);
-      ShapeVertex c = cone_side(base, height, z1, th1), d = cone_side(base, height, z1, th0);
-      quad(&a, &b, &c, &d, 0, k == stacks - 1);
-    }
-  }
-  glEnd();
-}
-
-static ShapeVertex torus_vertex(double inner, double outer, double psi, double phi) {
-  ShapeVertex v;
-  double ring = outer + cos(phi) * inner;
-  v.p[0] = (float)(cos(psi) * ring), v.p[1] = (float)(sin(psi) * ring), v.p[2] = (float)(sin(phi) * inner);
-  v.n[0] = (float)(cos(psi) * cos(phi)), v.n[1] = (float)(sin(psi) * cos(phi)), v.n[2] = (float)sin(phi);
-  return v;
-}
-
-void glutSolidTorus(GLdouble innerRadius, GLdouble outerRadius, GLint sides, GLint rings) {
-  if (sides < 3 || rings < 3) return;
-  glBegin(GL_TRIANGLES);
-  for (GLint j = 0; j < rings; ++j) {
-    double psi0 = 2.0 * SHADELAB_PI * j / rings, psi1 = 2.0 * SHADELAB_PI * (j + 1) / rings;
-    for (GLint i = 0; i < sides; ++i) {
-      double phi0 = 2.0 * SHADELAB_PI * i / sides, phi1 = 2.0 * SHADELAB_PI * (i + 1) / sides;
-      ShapeVertex a = torus_vertex(innerRadius, outerRadius, psi0, phi0);
-      ShapeVertex b = torus_vertex(innerRadius, outerRadius, psi1, phi0);
-      ShapeVertex c = torus_vertex(innerRadius, outerRadius, psi1, phi1);
-      ShapeVertex d = torus_vertex(innerRadius, outerRadius, psi0, phi1);
-      quad(&a, &b, &c, &d, 0, 0);
-    }
-  }
-  glEnd();
-}
-
 void glutSolidCube(GLdouble size) {
   /* Per face: normal n and axes u, v with u x v = n. */
   static const float faces[6][3][3] = {
-      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
+      {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+      {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+      {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}}, {{0, 0, -1}, {0, 1, 0}, {1, 0, 0}},
   };
   static const float corners[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
   float h = (float)(0.5 * size);
@@ -130,36 +236,9 @@ void glutSolidCube(GLdouble size) {
         v[k].p[i] = h * (n[i] + corners[k][0] * faces[f][1][i] + corners[k][1] * faces[f][2][i]);
       }
     }
-    quad(&v[0], &v[1], &v[2], &v[3], 0, 0);
-  }
-  glEnd();
-}
-
-void glutSolidTetrahedron(void) {
-  static const float v[4][3] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-  /* Each face is counter-clockwise seen from outside; its normal points away from the
-   * opposite vertex. */
-  static const int faces[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
-  const float s = 0.57735026918962576f; /* 1 / sqrt(3) */
-  glBegin(GL_TRIANGLES);
-  for (int f = 0; f < 4; ++f) {
-    const float* opposite = v[faces[f][3]];
-    glNormal3f(-opposite[0] * s, -opposite[1] * s, -opposite[2] * s);
-    for (int k = 0; k < 3; ++k) glVertex3fv(v[faces[f][k]]);
-  }
-  glEnd();
-}
-
-void glutSolidTeapot(GLdouble size) {
-  float s = (float)size;
-  glBegin(GL_TRIANGLES);
-  for (int t = 0; t < shadelab_glut_teapot_triangle_count; ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const float* v = shadelab_glut_teapot_vertices[shadelab_glut_teapot_triangles[t][k]];
-      glNormal3f(v[3], v[4], v[5]);
-      glTexCoord2f(v[6], v[7]);
-      glVertex3f(s * v[0], s * v[1], s * v[2]);
-    }
+    /* The quad v0 v1 v2 v3 (counter-clockwise) as triangles (v0, v1, v2), (v0, v2, v3). */
+    triangle(&v[0], &v[1], &v[2]);
+    triangle(&v[0], &v[2], &v[3]);
   }
   glEnd();
 }

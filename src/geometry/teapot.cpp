@@ -1,5 +1,6 @@
 // The Utah teapot: Newell's 32 Bezier patches evaluated on a grid with analytic normals, turned
-// and scaled as glutSolidTeapot(size) does (lid toward +y, spout toward +x, centred).
+// and scaled as GLUT 3.7's glutSolidTeapot(size) does (lid toward +y, spout toward +x, centred;
+// freeglut 3's sits 0.0375 size lower, which libshadelab-glut follows: gl/glut/teapot_gen.cpp).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -92,8 +93,8 @@ Mesh make_teapot(const TeapotParams& params) {
       glm::dvec3 p, pu, pv;
       evaluate(c, u, v, p, pu, pv);
       glm::vec3 d = outward_normal(c, u, v), q(p);
-      // glutSolidTeapot: rotate 270 degrees about x (z up becomes y up, (x, y, z) -> (x, z, -y)),
-      // scale by size / 2, after moving the data down by 1.5 along its z.
+      // GLUT 3.7's glutSolidTeapot: rotate 270 degrees about x (z up becomes y up,
+      // (x, y, z) -> (x, z, -y)), scale by size / 2, after moving the data down by 1.5 along z.
       return detail::Vertex{s * glm::vec3(q.x, q.z - 1.5f, -q.y), {d.x, d.z, -d.y}, {float(u), float(v)}};
     });
   }
