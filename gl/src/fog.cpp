@@ -4,6 +4,7 @@
 // component (the others zero); glFogiv's colour maps integers to [-1, 1]; the colour is
 // clamped to [0, 1] when stored; a negative density is GL_INVALID_VALUE.
 #include <algorithm>
+#include <cmath>
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
@@ -22,7 +23,8 @@ void fog(GlContext& c, GLenum pname, const GLfloat* p) {
   FogSettings& f = c.fog;
   switch (pname) {
     case GL_FOG_MODE: {
-      const GLenum mode = GLenum(GLint(p[0]));
+      // A float past the integers names no mode (Mesa's (GLint) cast gives INT_MIN there).
+      const GLenum mode = std::isfinite(p[0]) && std::fabs(p[0]) < 2e9f ? GLenum(GLint(p[0])) : 0;
       if (mode != GL_LINEAR && mode != GL_EXP && mode != GL_EXP2) return c.set_error(GL_INVALID_ENUM);
       f.mode = mode;
       return;
