@@ -1,7 +1,9 @@
 // A fixed set of worker threads that run one job at a time over numbered work items, the
 // calling thread joining in. Each thread owns a contiguous share of a job's items and takes
-// them from the front; a thread done with its share takes from the back of another's. Jobs
-// allocate nothing; idle workers spin briefly, then sleep.
+// them from the front; a thread done with its share takes from the back of another's. A job
+// ends when its items are done, whoever did them: a worker the system has not run yet (a
+// machine shared with other work) holds nothing up, and finds nothing left when it runs.
+// Jobs allocate nothing; idle workers spin briefly, then sleep.
 // It knows nothing about rendering and must not be shared by two drawing threads at once.
 #pragma once
 
@@ -57,9 +59,9 @@ class ThreadPool {
   /// Returns when the job started by start(), if any, has ended (at once when none runs),
   /// taking items of it that no worker has taken yet.
   void wait() {
-    if (running_.load() == 0) return;
+    if (pending_.load(std::memory_order_acquire) == 0) return;
     take_items(0);
-    while (running_.load() != 0) cpu_relax();
+    finish();
   }
 
  private:
@@ -74,6 +76,9 @@ class ThreadPool {
   void publish(int count, Thunk thunk, void* ctx, bool caller_joins);
   void dispatch(int count, Thunk thunk, void* ctx);
   void take_items(int worker);
+  /// Waits until every item of the current job is done (items other threads took and still
+  /// run); yields the processor while it waits long, to a worker that may need it.
+  void finish();
   void worker_loop(int worker);
 
   /// A thread's share of the current job: the next item to take from the front (low 32
@@ -85,10 +90,12 @@ class ThreadPool {
   std::vector<std::thread> workers_;
   std::unique_ptr<Share[]> shares_;
   std::atomic<std::uint32_t> generation_{0};
-  std::atomic<int> running_{0};  ///< workers still inside the current job
+  std::atomic<int> pending_{0};  ///< items of the current job not yet done
   std::atomic<bool> stop_{false};
-  Thunk thunk_ = nullptr;
-  void* ctx_ = nullptr;
+  // The current job's function. Set before its items are published and read by a thread only
+  // after it has claimed an item: the job is then still running, so they are that job's.
+  std::atomic<Thunk> thunk_{nullptr};
+  std::atomic<void*> ctx_{nullptr};
 };
 
 /// Threads to use for a request of `threads`: itself when positive, else $SHADELAB_THREADS
