@@ -2,6 +2,7 @@
 // colour-material tracking. Entry points live in the other files; nothing here draws.
 #include "gl/src/context.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -29,6 +30,23 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   textures.gen[1].object_plane = textures.gen[1].eye_plane = glm::vec4(0, 1, 0, 0);
   const char* reference = std::getenv("SHADELAB_REFERENCE");
   use_reference = reference && *reference && std::string_view(reference) != "0";
+  if (const char* stats = std::getenv("SHADELAB_STATS")) stats_path = stats;
+}
+
+// With SHADELAB_STATS, one line of counts for the context's life (nothing when the file cannot
+// be opened: the library reports nothing of its own accord).
+GlContext::~GlContext() {
+  if (!pipeline || stats_path.empty()) return;
+  pipeline->finish_draws();
+  const RenderStats n = pipeline->take_counts();
+  if (std::FILE* f = std::fopen(stats_path.c_str(), "a")) {
+    std::fprintf(f, "shadelab-stats draws=%llu deferred=%llu triangles=%llu fragments=%llu simd=%llu reference=%llu shaded=%llu\n",
+                 (unsigned long long)n.draws, (unsigned long long)n.draws_deferred,
+                 (unsigned long long)n.triangles_in, (unsigned long long)n.fragments,
+                 (unsigned long long)(n.fragments - n.fragments_reference),
+                 (unsigned long long)n.fragments_reference, (unsigned long long)n.pixels_shaded);
+    std::fclose(f);
+  }
 }
 
 MatrixStack& GlContext::current_stack() {

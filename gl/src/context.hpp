@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <unordered_map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -452,6 +453,12 @@ struct GlContext {
   /// context's life; null with SHADELAB_REFERENCE set (the reference pipeline draws).
   std::unique_ptr<PipelineContext> pipeline;
   bool use_reference = false;
+  /// The texture objects draws waiting in `pipeline` read, kept alive until they are drawn
+  /// (texture_draw_state); it forgets them when no draw waits.
+  std::vector<std::shared_ptr<const TextureObject>> textures_of_waiting_draws;
+  /// SHADELAB_STATS: the file a line of the context's draw and fragment counts is appended to
+  /// when it is destroyed (PipelineContext::set_counting); empty: no counting.
+  std::string stats_path;
   UserBuffer user;
   TileMap tiles;
   bool ever_current = false;  // the first OSMesaMakeCurrent sets the viewport
@@ -463,6 +470,9 @@ struct GlContext {
   /// A context with OpenGL's initial state; it shares texture objects and display lists
   /// with `share` when there is one (OSMesa's sharelist, GLX's share context).
   GlContext(GLenum format, int depth, int stencil, const GlContext* share);
+  ~GlContext();
+  GlContext(const GlContext&) = delete;
+  GlContext& operator=(const GlContext&) = delete;
 
   /// Records `code` unless an earlier error is still unread (GL 1.1 section 2.5).
   void set_error(GLenum code) {

@@ -147,15 +147,6 @@ shadelab::FogState fog_state(const GlContext& c) {
   return f;
 }
 
-TextureEnvMode env_mode(GLenum mode) {
-  switch (mode) {
-    case GL_REPLACE: return TextureEnvMode::kReplace;
-    case GL_DECAL: return TextureEnvMode::kDecal;
-    case GL_BLEND: return TextureEnvMode::kBlend;
-    default: return TextureEnvMode::kModulate;
-  }
-}
-
 // m * v with glm's operations in glm's order, (m0 x + m1 y) + (m2 z + m3 w), so the same
 // floats; in one SSE register where the target has one. glm's operator*, called from the
 // per-vertex loops, was not inlined: its result went through memory in two halves and was
@@ -448,8 +439,7 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   ShadeState shade;
   shade.lighting = false;  // colours lit per vertex above, unless deferred below
   shade.shading = flat ? ShadingMode::kFlat : ShadingMode::kGouraud;
-  shade.texture = active_texture(c);
-  shade.texture_env = env_mode(c.textures.env_mode);
+  texture_draw_state(c, shade);
   shade.fog = fog_state(c);
   const LightingState& l = c.lighting;
   bool lit = l.enabled && !p.deferred_lighting;  // colours lit per vertex above
@@ -526,8 +516,7 @@ FragmentState rectangle_fragment_state(const GlContext& c) { return fragment_sta
 ShadeState rectangle_shade_state(GlContext& c) {
   ShadeState shade;
   shade.lighting = false;
-  shade.texture = active_texture(c);
-  shade.texture_env = env_mode(c.textures.env_mode);
+  texture_draw_state(c, shade);
   return shade;
 }
 
@@ -647,8 +636,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   shade.lights = p.lights;
   shade.front = l.front;
   shade.back = l.back;
-  shade.texture = texture;
-  shade.texture_env = env_mode(c.textures.env_mode);
+  texture_draw_state(c, shade);
   shade.fog = fog_state(c);
   VertexInput in;
   in.positions = m.positions;

@@ -62,6 +62,7 @@ void make_pipeline(GlContext& c) {
   if (c.pipeline || c.use_reference) return;
   c.pipeline = std::make_unique<PipelineContext>();
   c.pipeline->set_deferred(true);
+  c.pipeline->set_counting(!c.stats_path.empty());
 }
 
 void settle_clears(GlContext& c) {

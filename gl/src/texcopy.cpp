@@ -72,6 +72,7 @@ void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum i
   std::vector<std::uint8_t> inside;
   RgbaImage image = read_framebuffer(c, x + border, y + (strip_rows ? 1 : 0), inner_w, inner_h, inside);
   TextureObject& t = *bound_texture(c, target);
+  texture_changing(c, t);
   define_level(t, level, GLint(internal), inner_w, inner_h);
   store_inside(image, inside, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
 }
@@ -93,6 +94,7 @@ void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLin
   if (width == 0 || height == 0) return;
   std::vector<std::uint8_t> inside;
   RgbaImage image = read_framebuffer(c, x, y, width, height, inside);
+  texture_changing(c, t);
   store_inside(image, inside, xoffset, yoffset, img, t.texture.levels[std::size_t(level)]);
 }
 

@@ -96,6 +96,7 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   const int inner_h = strip_rows ? height - 2 : height;
   TextureObject& t = *bound_texture(c, target);
   RgbaImage image = unpack(c, width, border, strip_rows ? 1 : 0, inner_w, inner_h, format, type, pixels);
+  texture_changing(c, t);
   define_level(t, level, internal, inner_w, inner_h);
   store_texels(image, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
 }
@@ -116,6 +117,7 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
   if (width == 0 || height == 0 || !pixels) return;
   RgbaImage image = unpack(c, width, 0, 0, width, height, format, type, pixels);
+  texture_changing(c, t);
   store_texels(image, x, y, img, t.texture.levels[std::size_t(level)]);
 }
 

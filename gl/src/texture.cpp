@@ -65,6 +65,7 @@ void tex_parameter(GlContext& c, GLenum target, GLenum pname, const float* v, bo
   if (!t) return c.set_error(GL_INVALID_ENUM);
   if (!v) return c.set_error(GL_INVALID_VALUE);
   const GLint e = enum_param(v[0], rounded);
+  texture_changing(c, *t);
   Texture& x = t->texture;
   switch (pname) {
     case GL_TEXTURE_WRAP_S: return set_wrap(c, x.wrap_s, e);
@@ -174,13 +175,51 @@ TextureObject* bound_texture(GlContext& c, GLenum target) {
 
 // GL 1.1 section 3.8.9: the 2D texture when enabled, else the 1D one. Like Mesa, an enabled
 // target whose texture is incomplete gives way to the next enabled one.
-const Texture* active_texture(GlContext& c) {
+namespace {
+
+TextureEnvMode env_mode(GLenum mode) {
+  switch (mode) {
+    case GL_REPLACE: return TextureEnvMode::kReplace;
+    case GL_DECAL: return TextureEnvMode::kDecal;
+    case GL_BLEND: return TextureEnvMode::kBlend;
+    default: return TextureEnvMode::kModulate;
+  }
+}
+
+const Texture* active_texture(GlContext& c, std::shared_ptr<const TextureObject>* object) {
   TextureState& s = c.textures;
   const Texture* t = nullptr;
-  if (s.enabled_2d && s.binding_2d.object) t = complete_texture(*s.binding_2d.object);
-  if (!t && s.enabled_1d && s.binding_1d.object) t = complete_texture(*s.binding_1d.object);
-  if (t) const_cast<Texture*>(t)->env_color = s.env_color;  // GL_TEXTURE_ENV_COLOR is context state
+  if (s.enabled_2d && s.binding_2d.object && (t = complete_texture(*s.binding_2d.object))) {
+    if (object) *object = s.binding_2d.object;
+    return t;
+  }
+  if (s.enabled_1d && s.binding_1d.object && (t = complete_texture(*s.binding_1d.object))) {
+    if (object) *object = s.binding_1d.object;
+  }
   return t;
+}
+
+}  // namespace
+
+const Texture* active_texture(GlContext& c) { return active_texture(c, nullptr); }
+
+void texture_draw_state(GlContext& c, ShadeState& shade) {
+  std::shared_ptr<const TextureObject> object;
+  shade.texture = active_texture(c, &object);
+  shade.texture_env = env_mode(c.textures.env_mode);
+  shade.texture_env_color = c.textures.env_color;
+  if (!shade.texture) return;
+  shade.texture_kept = true;
+  std::vector<std::shared_ptr<const TextureObject>>& kept = c.textures_of_waiting_draws;
+  if (!c.pipeline || c.pipeline->deferred_draws() == 0) kept.clear();
+  if (std::find(kept.begin(), kept.end(), object) == kept.end()) kept.push_back(std::move(object));
+}
+
+void texture_changing(GlContext& c, const TextureObject& t) {
+  if (!c.pipeline || c.pipeline->deferred_draws() == 0) return;
+  for (const std::shared_ptr<const TextureObject>& o : c.textures_of_waiting_draws) {
+    if (o.get() == &t) return c.pipeline->finish_draws();
+  }
 }
 
 void exec::GenTextures(GlContext& c, GLsizei n, GLuint* textures) {

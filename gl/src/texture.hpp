@@ -21,6 +21,15 @@ TextureObject* bound_texture(GlContext& c, GLenum target);
 /// its target were disabled, as in Mesa).
 const Texture* active_texture(GlContext& c);
 
+/// Sets the texturing of a draw's `shade` (the active texture, its environment mode and
+/// colour) and marks its texture kept (ShadeState::texture_kept): the object stays alive
+/// while draws that read it wait, and texture_changing finishes them before it changes.
+void texture_draw_state(GlContext& c, ShadeState& shade);
+
+/// Call before `t`'s texels or parameters change: the waiting draws that read it are drawn
+/// first (GL's order), as Mesa flushes before it modifies a texture.
+void texture_changing(GlContext& c, const TextureObject& t);
+
 /// Pixels as RGBA floats, row by row from the first, ready to be stored into a texture:
 /// `exact_bytes` when they were unsigned bytes passed through unchanged (then stored exactly
 /// as Mesa stores bytes); `from_framebuffer` for glCopyTex*, whose 5-bit components llvmpipe

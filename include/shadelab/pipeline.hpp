@@ -335,6 +335,11 @@ struct ShadeState {
   /// secondary colour is added. Needs texcoords in the vertex input.
   const Texture* texture = nullptr;
   TextureEnvMode texture_env = TextureEnvMode::kModulate;
+  glm::vec4 texture_env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend, in [0, 1]
+  /// The caller keeps `*texture` alive and unchanged until the context's finish_draws (the GL
+  /// library finishes the waiting draws before it changes a texture and keeps the textures of
+  /// waiting draws alive): a textured draw may then wait (PipelineContext::set_deferred).
+  bool texture_kept = false;
   /// Shadow maps by light index (empty, or as long as `lights`; size 0 = unshadowed light).
   std::span<const ShadowMap> shadow_maps;
   /// Fog, applied after texturing and the colour sum.
@@ -401,7 +406,12 @@ struct RenderStats {
   std::uint64_t triangles_rasterized = 0;
   std::uint64_t vertices_lit = 0;
   std::uint64_t fragments = 0;        ///< covered samples that passed stipple and scissor
+  /// Of `fragments`, those the fast pipeline handed one at a time to the reference's
+  /// per-fragment operations (stencil, capture, shadow maps) instead of its SIMD blocks.
+  std::uint64_t fragments_reference = 0;
   std::uint64_t pixels_shaded = 0;    ///< fragments that passed every test and were written
+  std::uint64_t draws = 0;            ///< draw_triangles calls (PipelineContext::take_counts)
+  std::uint64_t draws_deferred = 0;   ///< of them, those that waited for finish_draws
   double ms_vertex = 0, ms_raster = 0, ms_resolve = 0, ms_total = 0;
   bool interrupted = false;  ///< render_scene stopped at RenderOptions::deadline
   /// Exact transparency: fragments not blended because RenderOptions::max_fragment_memory was
@@ -433,7 +443,8 @@ class PipelineContext {
   /// waiting draw tile by tile: in each tile, every draw's triangles in submission order,
   /// while the tile is in the cache. A frame's draws then pass over the framebuffer once
   /// rather than once each; the pixels are the same. A draw waits only when nothing it reads
-  /// stays the caller's after the call (no texture, shadow maps or fragment capture), no
+  /// stays the caller's after the call (no shadow maps, fragment capture or texture but a
+  /// kept one, ShadeState::texture_kept), no
   /// counts are asked of it (stats null), and it and the queue are small (a long draw pays for
   /// its own pass); any other draw first finishes the waiting ones. Call finish_draws (or
   /// apply_pending_clears, which calls it) before anything else reads or writes the
@@ -445,6 +456,11 @@ class PipelineContext {
   void finish_draws();
   /// How many draws wait for finish_draws.
   std::size_t deferred_draws() const;
+  /// Counting (off by default): every draw through the context adds its triangle, fragment
+  /// and draw counts (RenderStats; fragments by path, draws deferred or not) to totals that
+  /// take_counts returns and resets. Deferred draws count when finish_draws draws them.
+  void set_counting(bool on);
+  RenderStats take_counts();
   /// Clears left to the draws, as llvmpipe does (the GL library's glClear): a tile flagged in
   /// `tiles` is cleared (colour to `color` with kColor, depth to `depth` with kDepth) by the
   /// next draw_triangles through this context that draws into it, just before its first

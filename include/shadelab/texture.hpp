@@ -41,7 +41,6 @@ struct Texture {
   /// GL_TEXTURE_BORDER_COLOR, in [0, 1]: what GL_CLAMP's linear filter blends in beyond the
   /// edge (border texels themselves are not kept, as in Mesa's gallium drivers).
   glm::vec4 border_color{0.0f};
-  glm::vec4 env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend
 
   /// Complete when level 0 exists and, if the min filter uses mipmaps, every level down to
   /// 1x1 is present with halved sizes (GL 1.1 section 3.8.9). Incomplete textures are ignored.

@@ -25,6 +25,8 @@ struct PipelineContext::Impl {
   std::vector<int> tiles;                    ///< the last draw's non-empty tiles
   std::vector<std::vector<const fast::DrawJob*>> tile_jobs;  ///< finish_draws: per tile, its draws
   PendingClears pending;                     ///< clears left to the draws
+  bool counting = false;                     ///< set_counting
+  RenderStats totals;                        ///< take_counts
   /// clear_ahead's job, run on the workers while the caller goes on: clears tiles[item].
   struct ClearAhead {
     PendingClears* pending = nullptr;

@@ -280,10 +280,12 @@ void raster_tiles(PipelineContext::Impl& impl, Framebuffer& fb, std::span<const 
 }
 
 // Whether a draw may wait for finish_draws: nothing it reads may change or end before then
-// (a texture, shadow maps and a capture are the caller's), and its counts are not asked for.
+// (shadow maps, a capture and a texture not kept are the caller's), and its counts are not
+// asked for.
 bool deferrable(const PipelineContext::Impl& impl, const FragmentState& frag, const ShadeState& shade,
                 const VertexInput& in, const RenderStats* stats) {
-  return impl.deferred && !stats && !frag.capture && !shade.texture && shade.shadow_maps.empty() &&
+  return impl.deferred && !stats && !frag.capture && (!shade.texture || shade.texture_kept) &&
+         shade.shadow_maps.empty() &&
          setup_items(in) <= kMaxDeferredTriangles && in.positions.size() <= kMaxDeferredVertices;
 }
 
@@ -293,7 +295,18 @@ void add_counts(RenderStats& to, const RenderStats& from) {
   to.triangles_clipped += from.triangles_clipped;
   to.triangles_rasterized += from.triangles_rasterized;
   to.fragments += from.fragments;
+  to.fragments_reference += from.fragments_reference;
   to.pixels_shaded += from.pixels_shaded;
+}
+
+// The workers' fragment counts of the rasterization just done, into the context's totals
+// (set_counting); the workers' counts start again.
+void count_raster(PipelineContext::Impl& impl) {
+  if (!impl.counting) return;
+  for (WorkerScratch& w : impl.workers) {
+    add_counts(impl.totals, w.stats);
+    w.stats = RenderStats{};
+  }
 }
 
 }  // namespace
@@ -306,6 +319,14 @@ void PipelineContext::set_deferred(bool on) {
 }
 
 std::size_t PipelineContext::deferred_draws() const { return impl_->queued; }
+
+void PipelineContext::set_counting(bool on) { impl_->counting = on; }
+
+RenderStats PipelineContext::take_counts() {
+  RenderStats out = impl_->totals;
+  impl_->totals = RenderStats{};
+  return out;
+}
 
 void PipelineContext::finish_draws() {
   Impl& impl = *impl_;
@@ -326,9 +347,11 @@ void PipelineContext::finish_draws() {
   for (std::size_t t = 0; t < tiles; ++t) {
     if (!impl.tile_jobs[t].empty()) impl.tiles.push_back(int(t));
   }
+  for (fast::WorkerScratch& w : impl.workers) w.stats = RenderStats{};
   fast::raster_tiles(impl, *first.fb, impl.tiles, [&](int tile) -> const std::vector<const fast::DrawJob*>& {
     return impl.tile_jobs[std::size_t(tile)];
   });
+  fast::count_raster(impl);
   impl.tiles.assign(impl.jobs[impl.queued - 1]->tiles.begin(), impl.jobs[impl.queued - 1]->tiles.end());
   impl.queued = 0;
   impl.queued_vertices = 0;
@@ -344,7 +367,19 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
     context.apply_pending_clears(fb);
     impl.tiles.resize(std::size_t(fast::tile_count(fb)));
     for (std::size_t t = 0; t < impl.tiles.size(); ++t) impl.tiles[t] = int(t);
-    return draw_triangles(fb, projection, viewport, fragment, shade, in, stats_out);
+    if (!impl.counting) return draw_triangles(fb, projection, viewport, fragment, shade, in, stats_out);
+    RenderStats counts;  // every fragment on the reference's path
+    draw_triangles(fb, projection, viewport, fragment, shade, in, &counts);
+    counts.fragments_reference = counts.fragments;
+    fast::add_counts(impl.totals, counts);
+    ++impl.totals.draws;
+    if (stats_out) {
+      fast::add_counts(*stats_out, counts);
+      stats_out->vertices_lit += counts.vertices_lit;
+      stats_out->ms_vertex += counts.ms_vertex;
+      stats_out->ms_raster += counts.ms_raster;
+    }
+    return;
   }
   RenderStats local;
   RenderStats& stats = stats_out ? *stats_out : local;
@@ -391,6 +426,11 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
   fast::setup_stage(impl, job);
   job.in = nullptr;
   for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(stats, job.chunks[std::size_t(c)].stats);
+  if (impl.counting) {
+    for (int c = 0; c < job.chunk_count; ++c) fast::add_counts(impl.totals, job.chunks[std::size_t(c)].stats);
+    ++impl.totals.draws;
+    impl.totals.draws_deferred += defer;
+  }
   if (defer) {
     job.tiles.assign(impl.tiles.begin(), impl.tiles.end());
     ++impl.queued;
@@ -401,6 +441,7 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
   const fast::DrawJob* const only[1] = {&job};
   fast::raster_tiles(impl, fb, impl.tiles, [&](int) { return std::span<const fast::DrawJob* const>(only); });
   for (const fast::WorkerScratch& w : impl.workers) fast::add_counts(stats, w.stats);
+  fast::count_raster(impl);
   stats.ms_raster += fast::ms_since(t1);
   job.frag = nullptr;  // the caller's, as are the lights of shade_copy and the triangles
   job.shade_copy.lights = {};

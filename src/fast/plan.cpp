@@ -71,7 +71,7 @@ TexturePlan texture_plan(const ShadeState& shade) {
   tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t;
   tp.width = float(t->levels[0].width), tp.height = float(t->levels[0].height);
   tp.last_level = t->last_level();
-  for (int c = 0; c < 4; ++c) tp.border[c] = t->border_color[c] * 255.0f, tp.env_color[c] = t->env_color[c];
+  for (int c = 0; c < 4; ++c) tp.border[c] = t->border_color[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
   tp.env = shade.texture_env;
   tp.format = t->format;
   return tp;

@@ -177,6 +177,7 @@ void scalar_fragment(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, i
   }
   std::size_t px = std::size_t(y) * std::size_t(fb.width) + std::size_t(x);
   ++ws.stats.fragments;
+  ++ws.stats.fragments_reference;
   // draw.cpp's order: with the alpha test, the colour first (GL 1.1 section 4.1.3).
   glm::vec4 color;
   if (job.plan.alpha_test) {

@@ -162,7 +162,7 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     const float q = a[kTexCoord + 3];
     const glm::vec2 st(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q));
     glm::vec4 texel = sample_texture(t, st, texture_rho2(t, f.texture_derivatives));
-    color = apply_texture_env(shade.texture_env, t.format, color, texel, t.env_color);
+    color = apply_texture_env(shade.texture_env, t.format, color, texel, shade.texture_env_color);
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped
   // (Mesa's fixed-function fragment program adds it without saturating).

@@ -408,7 +408,7 @@ class RandomDraws {
     t->wrap_t = TextureWrap(integer(0, 2));
     t->min_filter = TextureFilter(integer(0, 5));
     t->mag_filter = chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
-    t->env_color = color();
+    env_color_ = color();  // ShadeState's, given with the texture
     t->border_color = {texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1)};
     return t;
   }
@@ -438,7 +438,10 @@ class RandomDraws {
     s.lights = d.lights;
     s.front = material();
     s.back = material();
-    if (!d.texcoords.empty() && chance(0.25)) d.texture = texture();
+    if (!d.texcoords.empty() && chance(0.25)) {
+      d.texture = texture();
+      s.texture_env_color = env_color_;
+    }
     s.texture = d.texture.get();
     s.texture_env = TextureEnvMode(integer(0, 3));
     if (chance(0.1)) {
@@ -448,6 +451,7 @@ class RandomDraws {
   }
 
   std::mt19937 rng_;
+  glm::vec4 env_color_{0.0f};
   std::mt19937 texture_rng_;
 
   float texture_uniform(float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(texture_rng_); }

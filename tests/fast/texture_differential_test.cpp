@@ -47,7 +47,6 @@ std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d) {
   t->wrap_t = TextureWrap(pick(0, 2));
   t->format = TextureFormat(pick(0, 5));
   t->border_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
-  t->env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
   return t;
 }
 
@@ -105,6 +104,7 @@ TexturedScene textured_scene(unsigned seed) {
     d.viewport = {0, 0, width, height, 0.0f, 1.0f};
     d.shade.lighting = false;
     d.shade.texture = d.texture.get();
+    d.shade.texture_env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
     d.frag.depth_test = pick(0, 1);
     if (scene.exact) {
       d.texture->format = TextureFormat::kRgba;

@@ -2,7 +2,8 @@
 // when made and rasterized tile by tile when something reads the framebuffer. What a
 // program sees must not change: client arrays rewritten right after glDrawElements, a
 // stencil clear between stencil draws, more draws than the queue holds, depth read back
-// before glFinish, and draws with and without a texture interleaved.
+// before glFinish, draws with and without a texture interleaved, and textures and the
+// texture environment changed or deleted while textured draws wait.
 #include <GL/gl.h>
 #include <GL/osmesa.h>
 
@@ -130,6 +131,54 @@ int main() {
       ++failures;
     }
   }
+  // Textured draws wait too (their textures are kept): a texture changed after a draw
+  // (glTexSubImage2D, glTexParameter, a new image), the environment colour changed, and the
+  // texture deleted, each before anything reads the framebuffer: every draw with what it was
+  // drawn with.
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_TEXTURE_2D);
+  GLuint kept = 0;
+  glGenTextures(1, &kept);
+  glBindTexture(GL_TEXTURE_2D, kept);
+  const GLubyte two_texels[8] = {0, 0, 255, 255, 255, 255, 0, 255};  // blue, yellow
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, two_texels);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  auto textured_column = [](float x0, float x1, float s) {
+    glBegin(GL_QUADS);
+    glTexCoord2f(s, 0.5f);
+    glVertex2f(x0, -1.0f), glVertex2f(x1, -1.0f), glVertex2f(x1, 1.0f), glVertex2f(x0, 1.0f);
+    glEnd();
+  };
+  textured_column(-1.0f, -0.6f, 0.25f);  // blue (texel 0)
+  const GLubyte red_texel[4] = {255, 0, 0, 255};
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, red_texel);
+  textured_column(-0.6f, -0.2f, 0.25f);  // red (texel 0 replaced)
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+  textured_column(-0.2f, 0.2f, 0.5f);  // halfway between red and yellow
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
+  const GLfloat env_green[4] = {0.0f, 1.0f, 0.0f, 1.0f}, env_black[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env_green);
+  glColor3f(0.0f, 0.0f, 0.0f);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  textured_column(0.2f, 0.6f, 0.75f);  // black fragment blended toward green by yellow: (0, 1, 0)
+  glTexEnvfv(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, env_black);
+  glDeleteTextures(1, &kept);  // the default texture (no image) is bound now
+  glDisable(GL_TEXTURE_2D);
+  glColor3f(1.0f, 1.0f, 1.0f);
+  quad(0.6f, -1.0f, 1.0f, 1.0f, 0.0f);  // white
+  const std::uint8_t half[4] = {255, 128, 0, 255}, white[4] = {255, 255, 255, 255};
+  const std::uint8_t* kept_want[5] = {blue, red, half, green, white};
+  for (int k = 0; k < 5; ++k) {
+    const int x = int(kW * (0.1f + 0.2f * float(k)));
+    const char* what[5] = {"a textured draw before glTexSubImage2D", "after glTexSubImage2D",
+                           "after glTexParameter", "GL_BLEND before the environment colour changed",
+                           "an untextured draw after glDeleteTextures"};
+    expect_pixel(x, kH / 2, kept_want[k], what[k]);
+  }
+
   OSMesaDestroyContext(ctx);
   std::printf("%s\n", failures ? "FAILED" : "deferred draws seen in order");
   return failures ? 1 : 0;
