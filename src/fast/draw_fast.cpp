@@ -226,7 +226,8 @@ void setup_stage(PipelineContext::Impl& impl, DrawJob& job) {
 }
 
 PixelTarget framebuffer_target(Framebuffer& fb) {
-  return {fb.depth.data(), reinterpret_cast<std::uint32_t*>(fb.color.data()), std::size_t(fb.width), 0, 0};
+  return {fb.depth.data(), reinterpret_cast<std::uint32_t*>(fb.color.data()), std::size_t(fb.width), 0, 0,
+          fb.stencil.data(), std::size_t(fb.width)};
 }
 
 // Draws tile `tile` of every job in `jobs`, in order, on one thread. A tile with a pending
@@ -258,7 +259,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   const TileRows rows{reinterpret_cast<std::uint32_t*>(fb.color.data()) + first, fb.depth.data() + first,
                       std::size_t(fb.width)};
   load_tile(b, rows, what, p.color, p.depth);
-  ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0};
+  ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0, fb.stencil.data(), std::size_t(fb.width)};
   ws.bound = {true, (what & PipelineContext::PendingClears::kDepth) != 0, p.depth};
   for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
   store_tile(b, rows);

@@ -106,8 +106,8 @@ struct DrawPlan {
   bool phong = false;            ///< lit per pixel
   bool flat = false;             ///< colours from the provoking vertex
   bool two_side = false;         ///< back-facing triangles use back colours / material
-  bool scalar_fragments = false; ///< per-fragment reference operations (stencil, capture,
-                                 ///< shadow maps, Phong the SIMD kernel does not cover)
+  bool scalar_fragments = false; ///< per-fragment reference operations (capture, shadow
+                                 ///< maps, Phong the SIMD kernel does not cover)
   TexturePlan texture;           ///< texturing on the SIMD path
   bool writes_color = true;      ///< some colour channel is written (or captured)
   bool fog = false;              ///< fogged colours (ShadeState::fog)
@@ -168,6 +168,9 @@ struct PixelTarget {
   std::uint32_t* color = nullptr;
   std::size_t stride = 0;
   int x0 = 0, y0 = 0;
+  /// The framebuffer's stencil values, always in place: pixel (x, y) at y * stencil_stride + x.
+  std::uint8_t* stencil = nullptr;
+  std::size_t stencil_stride = 0;
 };
 
 /// One tile's colour and depth, rows of kTileSize pixels.

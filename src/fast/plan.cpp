@@ -40,7 +40,7 @@ void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, 
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.texture.texture) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.texture.texture || f.stencil.enabled) {
     return BlockKernel::kGeneral;
   }
   if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
@@ -124,7 +124,7 @@ void make_plan(DrawJob& job) {
   bool simd_materials = simd_supports(shade.front) && (!p.two_side || simd_supports(shade.back));
   p.simd_vertex_lighting = p.vertex_lighting && !shadows && simd_materials;
   p.writes_color = writes_color(frag);
-  p.scalar_fragments = frag.stencil.enabled || frag.capture || (p.phong && (shadows || !simd_materials));
+  p.scalar_fragments = frag.capture || (p.phong && (shadows || !simd_materials));
   p.texture = texture_plan(shade);
   p.fog = shade.fog.enabled;
   if (p.fog) p.fog_params = detail::fog_params(shade.fog);

@@ -30,14 +30,17 @@ constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
 struct BlockPixels {
   float* depth[kRows];
   std::uint32_t* color[kRows];
+  std::uint8_t* stencil[kRows];
   alignas(64) float depth_copy[kRows][kMaxLanes];
   alignas(64) std::uint32_t color_copy[kRows][kMaxLanes];
+  alignas(64) std::uint8_t stencil_copy[kRows][kMaxLanes];
   std::size_t index[kRows];  // framebuffer index of each row's first pixel
   int copied[kRows];         // pixels of the row inside the framebuffer, when copied; else 0
 };
 
 HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x, int y, bool interior,
                            BlockPixels& g) {
+  const bool stencil = job.frag->stencil.enabled;
   if (interior) {  // every row inside the framebuffer
     const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
     #pragma GCC unroll 4
@@ -45,6 +48,7 @@ HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x,
       const std::size_t index = first + std::size_t(r) * target.stride;
       g.depth[r] = job.frag->depth_test ? target.depth + index : nullptr;
       g.color[r] = job.plan.writes_color ? target.color + index : nullptr;
+      g.stencil[r] = stencil ? target.stencil + std::size_t(y + r) * target.stencil_stride + std::size_t(x) : nullptr;
       g.copied[r] = 0;
     }
     return;
@@ -60,6 +64,7 @@ HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x,
     g.index[r] = inside ? first + std::size_t(r) * width : 0;
     g.depth[r] = job.frag->depth_test ? &fb.depth[g.index[r]] : nullptr;
     g.color[r] = job.plan.writes_color ? reinterpret_cast<std::uint32_t*>(&fb.color[g.index[r] * 4]) : nullptr;
+    g.stencil[r] = stencil ? &fb.stencil[g.index[r]] : nullptr;
     g.copied[r] = 0;
     if (inside && valid == lanes) continue;
     // A partial row: its lanes outside the framebuffer are never covered, but are loaded.
@@ -67,8 +72,10 @@ HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x,
     g.copied[r] = n;
     std::fill_n(g.depth_copy[r], lanes, 0.0f);
     std::fill_n(g.color_copy[r], lanes, 0u);
+    std::fill_n(g.stencil_copy[r], lanes, std::uint8_t(0));
     if (g.depth[r]) g.depth[r] = static_cast<float*>(std::memcpy(g.depth_copy[r], g.depth[r], std::size_t(n) * 4));
     if (g.color[r]) g.color[r] = static_cast<std::uint32_t*>(std::memcpy(g.color_copy[r], g.color[r], std::size_t(n) * 4));
+    if (g.stencil[r]) g.stencil[r] = static_cast<std::uint8_t*>(std::memcpy(g.stencil_copy[r], g.stencil[r], std::size_t(n)));
   }
 }
 
@@ -79,6 +86,7 @@ void close_block(const DrawJob& job, const BlockPixels& g) {
     if (!n) continue;
     if (g.depth[r]) std::memcpy(&job.fb->depth[g.index[r]], g.depth[r], n * sizeof(float));
     if (g.color[r]) std::memcpy(&job.fb->color[g.index[r] * 4], g.color[r], n * 4);
+    if (g.stencil[r]) std::memcpy(&job.fb->stencil[g.index[r]], g.stencil[r], n);
   }
 }
 
@@ -191,6 +199,61 @@ HWY_INLINE VB block_coverage(const detail::Coverage& c, int x, int y, unsigned& 
   return hn::IfThenElse(hn::Ge(a, d), rim, one);
 }
 
+/// apply_stencil_op on stencil values held in 32-bit lanes.
+HWY_INLINE hn::Vec<DUB> stencil_op(StencilOp op, hn::Vec<DUB> v, hn::Vec<DUB> ref) {
+  const DUB du;
+  const auto one = hn::Set(du, 1u);
+  switch (op) {
+    case StencilOp::kKeep: return v;
+    case StencilOp::kZero: return hn::Zero(du);
+    case StencilOp::kReplace: return ref;
+    case StencilOp::kIncr: return hn::Min(hn::Add(v, one), hn::Set(du, 0xffu));  // clamped (GL 1.1)
+    case StencilOp::kDecr: return hn::Sub(hn::Max(v, one), one);
+    case StencilOp::kInvert: return hn::Xor(v, hn::Set(du, 0xffu));
+  }
+  return v;
+}
+
+/// fragment_ops.cpp's depth_stencil_test for the lanes `bits` of a block: the stencil test,
+/// then the depth test for the lanes it passes, each lane's stencil value updated by the
+/// operation of its outcome (through the write mask) and its depth written where both pass.
+/// Returns the lanes that pass both.
+HWY_INLINE unsigned stencil_and_depth(const FragmentState& fs, VB z, unsigned bits, BlockPixels& g) {
+  const DF df;
+  const DB db;
+  const DUB du;
+  const hn::Rebind<std::uint8_t, DU> d8;
+  const StencilState& s = fs.stencil;
+  const hn::Vec<DUB> stored = join_rows(DU(), hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[0])),
+                                        hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[kRows - 1])));
+  const auto value_mask = hn::Set(du, s.value_mask);
+  const VB masked = hn::ConvertTo(db, hn::BitCast(DIB(), hn::And(stored, value_mask)));
+  const MB live = block_mask(bits);
+  const MB stencil_pass = hn::And(live, depth_compare(s.func, hn::Set(db, float(s.ref & s.value_mask)), masked));
+  MB depth_pass = stencil_pass;
+  if (fs.depth_test && !hn::AllFalse(db, stencil_pass)) {
+    depth_pass = hn::And(stencil_pass, depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
+    if (fs.depth_write) {
+      const unsigned written = block_bits(depth_pass);
+      if (written) store_rows(df, z, written, g.depth);
+    }
+  }
+  const auto ref = hn::Set(du, s.ref);
+  const auto fail = hn::RebindMask(du, hn::AndNot(stencil_pass, live));
+  const auto depth_fail = hn::RebindMask(du, hn::AndNot(depth_pass, stencil_pass));
+  const auto pass = hn::RebindMask(du, depth_pass);
+  auto next = hn::IfThenElse(fail, stencil_op(s.fail, stored, ref), stored);
+  next = hn::IfThenElse(depth_fail, stencil_op(s.depth_fail, stored, ref), next);
+  next = hn::IfThenElse(pass, stencil_op(s.pass, stored, ref), next);
+  const auto write_mask = hn::Set(du, s.write_mask);
+  next = hn::Or(hn::AndNot(write_mask, stored), hn::And(next, write_mask));
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    hn::StoreU(hn::DemoteTo(d8, hn::BitCast(hn::RebindToSigned<DU>(), row_of(DU(), next, r))), d8, g.stencil[r]);
+  }
+  return block_bits(depth_pass);
+}
+
 // The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour;
 // with the alpha test, the colour first, and depth only for the lanes it keeps (GL 1.1
 // section 4.1.3: the alpha test comes before the stencil and depth tests). A smooth line's or
@@ -209,7 +272,9 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
     color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, bits});
     passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
   }
-  if (fs.depth_test && passed) {
+  if (fs.stencil.enabled) {
+    if (passed) passed = stencil_and_depth(fs, z, passed, g);
+  } else if (fs.depth_test && passed) {
     MB live = hn::And(block_mask(passed), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
     passed = block_bits(live);
     if (fs.depth_write && passed) store_rows(df, z, passed, g.depth);
