@@ -70,7 +70,7 @@ float texture_rho2(const Texture& texture, const TextureDerivatives& d);
 /// exactly for *_MIPMAP_NEAREST; magnification wherever rho2 <= 1, that is c = 0 for every
 /// filter pair). `st` must be finite (see finite_texcoord).
 glm::vec4 sample_texture(const Texture& texture, glm::vec2 st, float rho2);
-/// sample_texture's texel in byte units (0 to 255), before its one division by 255: texels
+/// sample_texture's texel in byte units (0 to 255), before its one scaling by 1/255: texels
 /// are read as their bytes, filtered by linear interpolations a + w (b - a) (along s, then
 /// t, then between two levels), the border colour taken times 255.
 glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec2 st, float rho2);

@@ -124,7 +124,13 @@ HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const Tria
                                const BlockPlace& at) {
   VB secondary[3] = {hn::Zero(DB()), hn::Zero(DB()), hn::Zero(DB())};
   Rgba color;
-  const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform;
+  // The environment may replace the fragment's alpha with the texel's: its own alpha is then
+  // not needed as the reference computes it.
+  const TexturePlan& tp = job.plan.texture;
+  const bool alpha_replaced = tp.env == TextureEnvMode::kReplace && tp.format != TextureFormat::kLuminance &&
+                              tp.format != TextureFormat::kRgb;
+  const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform &&
+                     (job.frag->logic_op.enabled || !alpha_replaced);
   const bool exact_all = exact && job.frag->logic_op.enabled;
   if (job.plan.phong) {
     color = phong_color(job, t, planes, w, secondary);
@@ -268,7 +274,24 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   open_block(job, target, x, y, kPath == Path::kInterior, g);
   unsigned passed = bits;
   Rgba color;
-  if (job.plan.alpha_test) {
+  if (job.plan.alpha_test && !fs.stencil.enabled && fs.depth_test) {
+    // Nothing but the depth write depends on the order of the two tests here: the depth test
+    // first, then the colours of the lanes it passes only, alpha-tested, and their depth
+    // written (llvmpipe's early test and late write). The colours of hidden fragments of
+    // alpha-tested layers drawn front to back are not computed.
+    passed = block_bits(hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, g.depth))));
+    if (passed) {
+      color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, passed});
+      passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
+      if (fs.depth_write && passed) store_rows(df, z, passed, g.depth);
+    }
+    counts.fragments += unsigned(std::popcount(bits));
+    counts.shaded += unsigned(std::popcount(passed));
+    if (passed && job.plan.writes_color) write_colors(fs, color, passed, g.color);
+    if constexpr (kPath == Path::kEdge) close_block(job, g);
+    return;
+  }
+  if (job.plan.alpha_test) {  // the alpha test first (GL 1.1 section 4.1.3): it comes before the stencil test
     color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, bits});
     passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
   }

@@ -23,9 +23,11 @@ namespace shadelab::fast::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
 /// A triangle's texture coordinates s, t and q (r is not sampled): value at vertex 2 and the
-/// differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane).
+/// differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane). `unit_q`: q is 1
+/// at every vertex, so its plane is 1 wherever the weights are finite.
 struct TexcoordPlanes {
   float base[3], d0[3], d1[3];
+  bool unit_q;
 };
 
 HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t) {
@@ -37,6 +39,7 @@ HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t)
     const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
     p.base[i] = a2, p.d0[i] = a0 - a2, p.d1[i] = a1 - a2;
   }
+  p.unit_q = p.base[2] == 1.0f && p.d0[2] == 0.0f && p.d1[2] == 0.0f;
   return p;
 }
 
@@ -64,13 +67,23 @@ HWY_INLINE hn::Vec<D> finite_coord(D d, hn::Vec<D> v) {
   return hn::IfThenElse(hn::Gt(v, minus), below, hn::IfThenElseZero(hn::Eq(v, v), minus));
 }
 
-/// (s / q, t / q) at weights p0, p1, made finite (texcoord.hpp's project_texcoord).
+/// (s / q, t / q) at weights p0, p1, made finite (texcoord.hpp's project_texcoord). Where q
+/// is 1 at every vertex its plane is exactly 1 and the quotients the coordinates themselves,
+/// but where a weight is not finite (outside the triangle, past the horizon): NaN there, as
+/// the plane's p * 0 and the quotient give.
 template <class D>
 HWY_INLINE void project(D d, const TexcoordPlanes& tp, hn::Vec<D> p0, hn::Vec<D> p1, hn::Vec<D>& s, hn::Vec<D>& t) {
   hn::Vec<D> c[3];
-  #pragma GCC unroll 3
-  for (int i = 0; i < 3; ++i) {
+  const int planes = tp.unit_q ? 2 : 3;
+  for (int i = 0; i < planes; ++i) {
     c[i] = hn::Add(hn::Add(hn::Set(d, tp.base[i]), hn::Mul(p0, hn::Set(d, tp.d0[i]))), hn::Mul(p1, hn::Set(d, tp.d1[i])));
+  }
+  if (tp.unit_q) {
+    const auto finite = hn::And(hn::IsFinite(p0), hn::IsFinite(p1));
+    const auto nan = hn::Set(d, __builtin_nanf(""));
+    s = finite_coord(d, hn::IfThenElse(finite, c[0], nan));
+    t = finite_coord(d, hn::IfThenElse(finite, c[1], nan));
+    return;
   }
   s = finite_coord(d, hn::Div(c[0], c[2]));
   t = finite_coord(d, hn::Div(c[1], c[2]));
@@ -333,7 +346,7 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, const QuadDeri
     for (int k = 0; k < 4; ++k) out[k] = c.two_levels ? lerp(lo[k], hi[k], c.frac) : lo[k];
   }
   #pragma GCC unroll 4
-  for (int k = 0; k < 4; ++k) out[k] = hn::Div(out[k], hn::Set(db, 255.0f));
+  for (int k = 0; k < 4; ++k) out[k] = hn::Mul(out[k], hn::Set(db, 1.0f / 255.0f));
 }
 
 /// apply_texture_env: the fragment's colour `f` combined with the texel `t` by the

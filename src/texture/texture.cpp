@@ -166,10 +166,11 @@ float finite_texcoord(float v) {
 // later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR where the lod,
 // 0.5 fast_log2(rho2), is above 0); levels past the last one clamp.
 glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2) {
-  return sample_texture_bytes(t, st, rho2) / 255.0f;
+  return sample_texture_bytes(t, st, rho2) * (1.0f / 255.0f);
 }
 
-// In byte units; sample_texture divides by 255 once at the end.
+// In byte units; sample_texture scales them by 1/255 (a float product: one rounding of the
+// reciprocal away from the quotient) once at the end.
 glm::vec4 sample_texture_bytes(const Texture& t, glm::vec2 st, float rho2) {
   const TextureFilter f = t.min_filter;
   const bool linear_mip = f == TextureFilter::kNearestMipmapLinear || f == TextureFilter::kLinearMipmapLinear;
