@@ -284,7 +284,7 @@ void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::
   }
   x0 = std::max(x0, double(vp.x)), y0 = std::max(y0, double(vp.y));
   x1 = std::min(x1, double(vp.x) + vp.width), y1 = std::min(y1, double(vp.y) + vp.height);
-  if (x0 > x1 || y0 > y1) return;
+  if (!(x0 <= x1 && y0 <= y1)) return;  // nothing inside, or a NaN: nothing marked
   mark_dirty(c, int(std::floor(x0)) - margin, int(std::floor(y0)) - margin,
              int(std::ceil(x1)) + margin, int(std::ceil(y1)) + margin);
 }

@@ -42,14 +42,15 @@ GLenum map_size_error(GLenum map, GLsizei size) {
 }
 
 // Stores a map given as floats (colour values already mapped to [0, 1] from integer types):
-// colour values are clamped to [0, 1], S_TO_S values rounded to integers, I_TO_I kept.
+// colour values are clamped to [0, 1], S_TO_S values rounded to integers (GLint's range, as
+// Mesa stores them), I_TO_I kept.
 void store_map(GlContext& c, GLenum map, GLsizei size, const float* values) {
   if (const GLenum e = map_size_error(map, size); e != GL_NO_ERROR) return c.set_error(e);
   if (!values) return;
   const int slot = map_slot(map);
   std::vector<float> m(values, values + size);
   for (float& v : m) {
-    if (slot == PixelMaps::kStoS) v = std::round(finite_or_zero(v));
+    if (slot == PixelMaps::kStoS) v = std::round(std::clamp(finite_or_zero(v), -2147483648.0f, 2147483520.0f));
     else if (!is_index_map(slot)) v = clamp01(v);
   }
   c.pixel.maps.maps[std::size_t(slot)] = std::move(m);
@@ -237,7 +238,7 @@ void exec::GetPixelMapuiv(GlContext& c, GLenum map, GLuint* values) {
   if (!m || !values) return;
   const bool index = is_index_map(map_slot(map));
   for (std::size_t i = 0; i < m->size(); ++i) {
-    const double v = (*m)[i];
+    const double v = finite_or_zero((*m)[i]);  // an I_TO_I value given as NaN reads 0
     values[i] = index ? GLuint(std::int64_t(std::clamp(v, -2147483648.0, 4294967295.0)))
                       : GLuint(std::clamp(v, 0.0, 1.0) * 4294967295.0);
   }
@@ -250,7 +251,7 @@ void exec::GetPixelMapusv(GlContext& c, GLenum map, GLushort* values) {
   if (!m || !values) return;
   const bool index = is_index_map(map_slot(map));
   for (std::size_t i = 0; i < m->size(); ++i) {
-    const float v = (*m)[i];
+    const float v = finite_or_zero((*m)[i]);
     values[i] = index ? GLushort(std::clamp(v, 0.0f, 65535.0f)) : GLushort(std::lround(clamp01(v) * 65535.0f));
   }
 }
