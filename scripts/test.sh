@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Builds shadelab (installing missing Debian packages first) and runs every test with ctest,
-# then the whole suite again under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/),
-# the test program (every render there draws on threads) under ThreadSanitizer (build-tsan/),
-# and every fuzz target: its past findings, then a fixed, repeatable number of executions
-# (build-fuzz/; about 40 s each); any sanitizer report or crash fails. At the end, even after a
-# failure, it prints each stage's wall time and the CPU time of its processes
-# (docs/robustness.md).
+# Builds shadelab (installing missing Debian packages first) and runs every test with ctest;
+# then builds it again with clang, AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer's
+# coverage (build-asan/), runs the whole suite there and every fuzz target from the same build:
+# its past findings, then a fixed, repeatable number of executions; then the test program (every
+# render there draws on threads) under ThreadSanitizer (build-tsan/). Any sanitizer report or
+# crash fails. The sanitized builds compile the SIMD code for AVX2 and the portable target
+# only (SHADELAB_SIMD_TARGETS=reduced). At the end, even after a failure, it prints each
+# stage's wall time and the CPU time of its processes (docs/robustness.md).
 #
 #   scripts/test.sh           everything (what CI runs)
 #   scripts/test.sh --quick   the normal build's tests only
@@ -87,13 +88,26 @@ trap 'exit 130' INT TERM
 # --- the stages ------------------------------------------------------------------------------
 jobs=$(nproc)
 
-sanitized_build() {  # DIR FLAGS [TARGET...]
+sanitized_configure() {  # DIR FLAGS [CMAKE OPTION...]
   local dir="$1" flags="$2"
   shift 2
-  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  cmake -S . -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADELAB_SIMD_TARGETS=reduced \
     -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
-    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" >/dev/null
-  if [ $# -gt 0 ]; then cmake --build "$dir" --target "$@"; else cmake --build "$dir"; fi
+    -DCMAKE_EXE_LINKER_FLAGS="$flags" -DCMAKE_SHARED_LINKER_FLAGS="$flags" "$@" >/dev/null
+}
+
+# One build serves the sanitized test run and the fuzz targets: clang, ASan + UBSan (clang's
+# UBSan also checks float-to-integer conversions), and libFuzzer's coverage instrumentation.
+asan_build() {
+  sanitized_configure build-asan \
+    "-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+    -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DSHADELAB_FUZZ=ON
+  cmake --build build-asan
+}
+
+tsan_build() {
+  sanitized_configure build-tsan -fsanitize=thread
+  cmake --build build-tsan --target shadelab_tests gl_clear_ahead
 }
 
 sanitizer_tests() {
@@ -108,17 +122,31 @@ sanitizer_tests() {
 
 tsan_run() {
   export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
-  build-tsan/tests/shadelab_tests
-  build-tsan/tests/steady/gl_clear_ahead
+  # The test program in two halves side by side (its tests are mostly single-threaded).
+  local pids=() status=0 i
+  for i in 0 1; do
+    GTEST_TOTAL_SHARDS=2 GTEST_SHARD_INDEX=$i build-tsan/tests/shadelab_tests \
+      >"build-tsan/shadelab_tests.$i.log" 2>&1 &
+    pids+=($!)
+  done
+  for i in 0 1; do
+    if ! wait "${pids[$i]}"; then
+      status=1
+      echo "test: ThreadSanitizer run, half $i, FAILED:"
+      tail -n 60 "build-tsan/shadelab_tests.$i.log"
+    else
+      tail -n 3 "build-tsan/shadelab_tests.$i.log"
+    fi
+  done
+  build-tsan/tests/steady/gl_clear_ahead || status=1
+  return $status
 }
 
 stage "set-up and build (build/)" scripts/setup.sh --build
 stage "tests (build/)" ctest --test-dir build --output-on-failure -j "$jobs"
 [ "$quick" = 1 ] && exit 0
-stage "sanitizer build (build-asan/)" sanitized_build build-asan \
-  "-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+stage "sanitizer build (build-asan/: clang, fuzz targets too)" asan_build
 stage "sanitizer tests (ASan + UBSan)" sanitizer_tests
-stage "ThreadSanitizer build (build-tsan/)" sanitized_build build-tsan "-fsanitize=thread" \
-  shadelab_tests gl_clear_ahead
+stage "fuzzing (fuzz/run.sh --ci, in build-asan/)" fuzz/run.sh --ci --build build-asan
+stage "ThreadSanitizer build (build-tsan/)" tsan_build
 stage "ThreadSanitizer run" tsan_run
-stage "fuzzing (fuzz/run.sh --ci, build-fuzz/)" fuzz/run.sh --ci
