@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # shadelab against Mesa on the same programs, on this machine (docs/performance.md).
 #
-#   bench/run.sh [--frames N] [--rounds R] [--quick] [--no-softpipe] [--no-sweeps] [--out DIR]
+#   bench/run.sh [--frames N] [--rounds R] [--quick] [--no-softpipe] [--no-sweeps]
+#                [--no-corpus | --corpus-only] [--out DIR]
 #
 # Builds the benchmark programs into build/, then runs each scene in turn with Mesa's
 # llvmpipe, Mesa's softpipe and libshadelab-gl (the same GL 1.x source, bench/gl_bench.c), and
@@ -13,7 +14,13 @@
 # With --rounds R (default 1), each scene runs R times, llvmpipe and shadelab alternating:
 # the table shows the median of each side's R medians and the median of the R ratios, which
 # a shared machine's bursts of load move far less than a single pair.
-# SHADELAB_BUILD_DIR chooses the build folder (default build).
+# Then the corpus (bench/corpus.c: the kinds of program people run, one scene each): each
+# scene with llvmpipe and with shadelab, each at the better of 1 and all threads, the ratio,
+# whether the images agree, and whether any fragment left the SIMD path (SHADELAB_STATS); its
+# last line names the worst ratio. The script fails if a corpus scene's images disagree or
+# shadelab drew fragments on the scalar reference path.
+# SHADELAB_BUILD_DIR chooses the build folder (default build); SHADELAB_SIMD (avx512, avx2,
+# sse4, ssse3, scalar) the instruction set shadelab's SIMD code runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,6 +29,8 @@ rounds=1
 softpipe=1
 sweeps=1
 quick=0
+corpus=1
+scenes=1
 out=out/bench
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -30,8 +39,10 @@ while [ $# -gt 0 ]; do
     --quick) quick=1; shift ;;
     --no-softpipe) softpipe=0; shift ;;
     --no-sweeps) sweeps=0; shift ;;
+    --no-corpus) corpus=0; shift ;;
+    --corpus-only) scenes=0; sweeps=0; shift ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -41,7 +52,7 @@ if [ ! -f "$build/build.ninja" ]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 cmake --build "$build" --target bench_gl_mesa bench_gl_shadelab bench_phong_glsl \
-  bench_phong_shadelab gl_compare >/dev/null
+  bench_phong_shadelab bench_corpus_mesa bench_corpus_shadelab gl_compare >/dev/null
 mkdir -p "$out"
 B=$build/bench
 cores=$(nproc)
@@ -71,38 +82,87 @@ paired() {
 
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $cores cores; Mesa: $(dpkg-query -W -f='${Version}' libosmesa6 2>/dev/null || echo '?')"
 echo "frames: median of $frames after 2 warm-up frames, 1920x1080; $rounds round(s) per scene, alternating"
-printf '\n%-34s %12s %12s %12s %16s  %s\n' scene "llvmpipe ms" "softpipe ms" "shadelab ms" "shadelab/llvmpipe" "images"
-csv="$out/scenes.csv"
-echo "scene,llvmpipe_ms,softpipe_ms,shadelab_ms,ratio" > "$csv"
-big_triangles=1000000
-[ "$quick" = 1 ] && big_triangles=100000
-run_scene() {  # label, then the arguments of bench_gl_*
-  local label="$1"; shift
-  local l s=- m r agree
-  paired llvmpipe $B/bench_gl_mesa "$@" --frames "$frames" --png "$out/$label.mesa.png" -- \
-    $B/bench_gl_shadelab "$@" --frames "$frames" --png "$out/$label.shadelab.png"
-  if [ "$softpipe" = 1 ]; then
-    s=$(median softpipe_run $B/bench_gl_mesa "$@" --frames 3 --warmup 0)
-  fi
-  agree=$($build/tests/gl-conformance/gl_compare "$out/$label.mesa.png" "$out/$label.shadelab.png" \
-            --name "$label" --diff "$out/$label.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
-  printf '%-34s %12s %12s %12s %16s  %s\n' "$label" "$l" "$s" "$m" "$r" "$agree"
-  echo "$label,$l,$s,$m,$r" >> "$csv"
-}
-run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
-run_scene "b-shiny-teapot" teapot
-run_scene "c-fill-wall-2-layers" fill
-# The sphere's mesh again, compiled once into a display list (glBegin/glEnd) and called each
-# frame: next to (a), what a list costs against glDrawElements.
-run_scene "e-sphere-${big_triangles}-display-list" list --triangles "$big_triangles"
-paired llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png" -- \
-  $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png"
-agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.png" "$out/d-phong.shadelab.png" \
-          --name d-phong --diff "$out/d-phong.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
-printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$r" "$agree"
-echo "d-phong-8-lights,$l,-,$m,$r" >> "$csv"
+if [ "$scenes" = 1 ]; then
+  printf '\n%-34s %12s %12s %12s %16s  %s\n' scene "llvmpipe ms" "softpipe ms" "shadelab ms" "shadelab/llvmpipe" "images"
+  csv="$out/scenes.csv"
+  echo "scene,llvmpipe_ms,softpipe_ms,shadelab_ms,ratio" > "$csv"
+  big_triangles=1000000
+  [ "$quick" = 1 ] && big_triangles=100000
+  run_scene() {  # label, then the arguments of bench_gl_*
+    local label="$1"; shift
+    local l s=- m r agree
+    paired llvmpipe $B/bench_gl_mesa "$@" --frames "$frames" --png "$out/$label.mesa.png" -- \
+      $B/bench_gl_shadelab "$@" --frames "$frames" --png "$out/$label.shadelab.png"
+    if [ "$softpipe" = 1 ]; then
+      s=$(median softpipe_run $B/bench_gl_mesa "$@" --frames 3 --warmup 0)
+    fi
+    agree=$($build/tests/gl-conformance/gl_compare "$out/$label.mesa.png" "$out/$label.shadelab.png" \
+              --name "$label" --diff "$out/$label.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
+    printf '%-34s %12s %12s %12s %16s  %s\n' "$label" "$l" "$s" "$m" "$r" "$agree"
+    echo "$label,$l,$s,$m,$r" >> "$csv"
+  }
+  run_scene "a-sphere-${big_triangles}-8-lights" sphere --triangles "$big_triangles"
+  run_scene "b-shiny-teapot" teapot
+  run_scene "c-fill-wall-2-layers" fill
+  # The sphere's mesh again, compiled once into a display list (glBegin/glEnd) and called each
+  # frame: next to (a), what a list costs against glDrawElements.
+  run_scene "e-sphere-${big_triangles}-display-list" list --triangles "$big_triangles"
+  paired llvmpipe $B/bench_phong_glsl --frames "$frames" --png "$out/d-phong.mesa.png" -- \
+    $B/bench_phong_shadelab --frames "$frames" --png "$out/d-phong.shadelab.png"
+  agree=$($build/tests/gl-conformance/gl_compare "$out/d-phong.mesa.png" "$out/d-phong.shadelab.png" \
+            --name d-phong --diff "$out/d-phong.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
+  printf '%-34s %12s %12s %12s %16s  %s\n' "d-phong-8-lights (GLSL on Mesa)" "$l" - "$m" "$r" "$agree"
+  echo "d-phong-8-lights,$l,-,$m,$r" >> "$csv"
+fi
 
-[ "$sweeps" = 1 ] || exit 0
+# --- the corpus ------------------------------------------------------------------------------
+# smaller A B: the smaller of two times.
+smaller() { awk -v a="$1" -v b="$2" 'BEGIN { print (a + 0 < b + 0) ? a : b }'; }
+# The median frame time of a corpus program at the better of 1 and all threads.
+best_llvmpipe() {
+  smaller "$(LP_NUM_THREADS=1 median llvmpipe "$@")" "$(LP_NUM_THREADS=$cores median llvmpipe "$@")"
+}
+best_shadelab() {
+  smaller "$(SHADELAB_THREADS=1 median "$@")" "$(SHADELAB_THREADS=$cores median "$@")"
+}
+corpus_status=0
+run_corpus() {
+  local C=$B scene l m r agree stats ref worst=0 worst_scene="" ratios=()
+  echo
+  echo "corpus (bench/corpus.c), 1920x1080; each side at the better of 1 and $cores threads;"
+  echo "scalar = fragments shadelab drew on the reference path (SHADELAB_STATS), 0 expected"
+  printf '%-22s %12s %12s %16s  %-14s %s\n' scene "llvmpipe ms" "shadelab ms" "shadelab/llvmpipe" images scalar
+  echo "scene,llvmpipe_ms,shadelab_ms,ratio,within2,reference_fragments" > "$out/corpus.csv"
+  for scene in $("$C/bench_corpus_mesa" --list); do
+    local ls=() ms=() rs=() k a b
+    for ((k = 0; k < rounds; ++k)); do
+      a=$(best_llvmpipe "$C/bench_corpus_mesa" "$scene" --frames "$frames")
+      b=$(best_shadelab "$C/bench_corpus_shadelab" "$scene" --frames "$frames")
+      ls+=("$a"); ms+=("$b"); rs+=("$(ratio "$b" "$a")")
+    done
+    l=$(median_of "${ls[@]}"); m=$(median_of "${ms[@]}"); r=$(median_of "${rs[@]}")
+    llvmpipe "$C/bench_corpus_mesa" "$scene" --frames 1 --warmup 0 --png "$out/corpus-$scene.mesa.png" >/dev/null
+    stats="$out/corpus-$scene.stats"
+    rm -f "$stats"
+    SHADELAB_STATS="$stats" "$C/bench_corpus_shadelab" "$scene" --frames 1 --warmup 0 \
+      --png "$out/corpus-$scene.shadelab.png" >/dev/null
+    ref=$(sed -n 's/.* reference=\([0-9]*\).*/\1/p' "$stats" | awk '{ n += $1 } END { print n + 0 }')
+    agree=$($build/tests/gl-conformance/gl_compare "$out/corpus-$scene.mesa.png" "$out/corpus-$scene.shadelab.png" \
+              --name "$scene" --diff "$out/corpus-$scene.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
+    printf '%-22s %12s %12s %16s  %-14s %s\n' "$scene" "$l" "$m" "$r" "$agree" "$ref"
+    echo "$scene,$l,$m,$r,${agree%%%*},$ref" >> "$out/corpus.csv"
+    [ "$ref" = 0 ] || corpus_status=1
+    case "$agree" in *PASS) ;; *) corpus_status=1 ;; esac
+    ratios+=("$r")
+    if awk -v a="$r" -v b="$worst" 'BEGIN { exit !(a + 0 > b + 0) }'; then worst=$r; worst_scene=$scene; fi
+  done
+  echo "corpus: median ratio $(median_of "${ratios[@]}"), worst $worst ($worst_scene), $(printf '%s\n' "${ratios[@]}" | awk '$1 >= 1' | wc -l) of ${#ratios[@]} scenes at or above llvmpipe's time"
+  [ "$corpus_status" = 0 ] || echo "corpus: FAILED: images disagree or fragments left the SIMD path (above)"
+}
+
+[ "$corpus" = 0 ] || run_corpus
+
+[ "$sweeps" = 1 ] || exit "$corpus_status"
 
 echo; echo "sweep: triangles (sphere, 8 lights, 1920x1080) -> $out/triangles.csv"
 echo "triangles,llvmpipe_ms,shadelab_ms" > "$out/triangles.csv"
@@ -165,3 +225,4 @@ EOF
 else
   echo; echo "gnuplot is not installed (scripts/setup.sh installs gnuplot-nox): no plots"
 fi
+exit "$corpus_status"

@@ -40,8 +40,8 @@ GlContext::~GlContext() {
   pipeline->finish_draws();
   const RenderStats n = pipeline->take_counts();
   if (std::FILE* f = std::fopen(stats_path.c_str(), "a")) {
-    std::fprintf(f, "shadelab-stats draws=%llu deferred=%llu triangles=%llu fragments=%llu simd=%llu reference=%llu shaded=%llu\n",
-                 (unsigned long long)n.draws, (unsigned long long)n.draws_deferred,
+    std::fprintf(f, "shadelab-stats target=%s draws=%llu deferred=%llu triangles=%llu fragments=%llu simd=%llu reference=%llu shaded=%llu\n",
+                 PipelineContext::simd_target().c_str(), (unsigned long long)n.draws, (unsigned long long)n.draws_deferred,
                  (unsigned long long)n.triangles_in, (unsigned long long)n.fragments,
                  (unsigned long long)(n.fragments - n.fragments_reference),
                  (unsigned long long)n.fragments_reference, (unsigned long long)n.pixels_shaded);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -430,6 +431,11 @@ class PipelineContext {
   PipelineContext(const PipelineContext&) = delete;
   PipelineContext& operator=(const PipelineContext&) = delete;
   int threads() const;
+  /// The SIMD instruction set the fast pipeline dispatches to on this CPU ("AVX3", "AVX2",
+  /// "SSE4", "SSSE3" or the portable "EMU128"): the best one compiled that the CPU runs, or
+  /// the one $SHADELAB_SIMD names ("avx512", "avx2", "sse4", "ssse3", "scalar"; read when the
+  /// first context is made, ignored when that target is not available).
+  static std::string simd_target();
   /// The framebuffer's tiles: squares of kTileSize pixels, numbered row by row from pixel
   /// (0, 0), (width + kTileSize - 1) / kTileSize to a row.
   static constexpr int kTileSize = 64;

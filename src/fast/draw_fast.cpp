@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <mutex>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
@@ -18,12 +19,29 @@
 #include "fast/prims.hpp"
 #include "fast/raster.hpp"
 #include "fast/setup.hpp"
+#include "fast/simd_targets.hpp"
 #include "fast/vertex_stage.hpp"
 
 namespace shadelab {
 
+namespace {
+
+// $SHADELAB_SIMD (avx512, avx2, sse4, ssse3, scalar) restricts the process's dispatch to one
+// target, for benchmarks comparing them; read once, when the first context is made.
+void apply_simd_environment() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const char* env = std::getenv("SHADELAB_SIMD");
+    if (env && *env) fast::force_simd_target(env);
+  });
+}
+
+}  // namespace
+
 PipelineContext::PipelineContext(int threads)
-    : impl_(std::make_unique<Impl>(fast::resolve_thread_count(threads))) {}
+    : impl_((apply_simd_environment(), std::make_unique<Impl>(fast::resolve_thread_count(threads)))) {}
+
+std::string PipelineContext::simd_target() { return fast::current_simd_target(); }
 
 PipelineContext::~PipelineContext() { impl_->pool.wait(); }  // clear_ahead's job uses Impl
 

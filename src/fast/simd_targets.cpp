@@ -5,6 +5,8 @@
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
 #include "fast/simd_targets.hpp"
+
+#include <cctype>
 #include "hwy/highway.h"
 #include "hwy/targets.h"
 
@@ -29,11 +31,26 @@ std::vector<std::string> available_simd_targets() {
 
 std::string current_simd_target() { return HWY_DYNAMIC_DISPATCH(DispatchedTarget)(); }
 
+namespace {
+
+// Highway's name for `name`: its own names in any case ("avx2", "SSE4"), and "avx512" (AVX3)
+// and "scalar" (EMU128, the portable target) besides.
+std::string highway_name(const std::string& name) {
+  std::string upper;
+  for (char ch : name) upper += char(std::toupper(static_cast<unsigned char>(ch)));
+  if (upper == "AVX512") return "AVX3";
+  if (upper == "SCALAR") return "EMU128";
+  return upper;
+}
+
+}  // namespace
+
 bool force_simd_target(const std::string& name) {
   hwy::SetSupportedTargetsForTest(0);
   if (name.empty()) return true;
+  const std::string wanted = highway_name(name);
   for (std::int64_t t : hwy::SupportedAndGeneratedTargets()) {
-    if (name == hwy::TargetName(t)) {
+    if (wanted == hwy::TargetName(t)) {
       hwy::SetSupportedTargetsForTest(t);
       return true;
     }

@@ -14,8 +14,10 @@ std::vector<std::string> available_simd_targets();
 /// The target the fast pipeline uses now.
 std::string current_simd_target();
 
-/// Restricts dispatch to the named target (one of available_simd_targets()); "" restores the
-/// automatic choice. Returns false for an unknown name. Not thread-safe: call between draws.
+/// Restricts dispatch to the named target (one of available_simd_targets(), in any case, or
+/// "avx512" for AVX3 and "scalar" for EMU128); "" restores the automatic choice. Returns false
+/// for a name not compiled or not supported by this CPU (dispatch is then automatic). Not
+/// thread-safe: call between draws.
 bool force_simd_target(const std::string& name);
 
 }  // namespace shadelab::fast
