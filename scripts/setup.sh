@@ -10,6 +10,7 @@ cd "$(dirname "$0")/.."
 
 PACKAGES=(
   build-essential cmake ninja-build pkg-config ccache
+  dpkg-dev file  # cpack -G DEB: dpkg-shlibdeps for the package's Depends, `file` to find its ELF files
   python3 khronos-api  # gl/api/generate.py: the GL entry points from the OpenGL registry (gl.xml)
   libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev

@@ -24,6 +24,9 @@
 #ifndef SHADELAB_INSTALL_LIBDIR
 #define SHADELAB_INSTALL_LIBDIR "lib"
 #endif
+#ifndef SHADELAB_INSTALL_DATADIR
+#define SHADELAB_INSTALL_DATADIR "share"
+#endif
 
 namespace shadelab::cli {
 namespace {
@@ -41,19 +44,27 @@ struct RunOptions {
 
 constexpr int kExitTimeout = 124;
 
-// The folders holding libGLX_shadelab.so.0 and libOSMesa.so.8 for this executable: the build
-// tree keeps both in gl/platform beside it; an installation keeps the vendor in the library
-// folder and libOSMesa.so.8 in its shadelab/ subfolder.
-std::vector<fs::path> library_folders() {
+// shadelab's vendor libraries for this executable: the folders holding libGLX_shadelab.so.0
+// and libOSMesa.so.8, and the EGL vendor's JSON file. The build tree keeps all of them in
+// gl/platform beside the executable; an installation keeps the vendors in the library folder,
+// libOSMesa.so.8 in its shadelab/ subfolder and the JSON file in GLVND's egl_vendor.d.
+struct VendorFiles {
+  std::vector<fs::path> folders;  // empty: none found
+  fs::path egl_json;              // used when it exists
+};
+
+VendorFiles vendor_files() {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return {};
   const fs::path dir = exe.parent_path();
   const fs::path build = dir / "gl" / "platform";
-  if (fs::exists(build / "libGLX_shadelab.so.0")) return {build};
+  if (fs::exists(build / "libGLX_shadelab.so.0")) return {{build}, build / "shadelab.json"};
   const fs::path installed = dir.parent_path() / SHADELAB_INSTALL_LIBDIR;
-  if (fs::exists(installed / "libGLX_shadelab.so.0")) return {installed, installed / "shadelab"};
-  return {};
+  if (!fs::exists(installed / "libGLX_shadelab.so.0")) return {};
+  const fs::path egl_vendors =
+      dir.parent_path() / SHADELAB_INSTALL_DATADIR / "glvnd" / "egl_vendor.d";
+  return {{installed, installed / "shadelab"}, egl_vendors / "50_shadelab.json"};
 }
 
 // One %d (with flags and width: %04d) and no other conversion, %% aside.
@@ -106,15 +117,15 @@ std::string signal_name(int sig) {
 }
 
 // The program's environment: shadelab's vendor libraries first on the library path.
-std::vector<std::string> program_environment(const RunOptions& o, const std::vector<fs::path>& folders,
+std::vector<std::string> program_environment(const RunOptions& o, const VendorFiles& vendor,
                                              const std::string& display) {
   std::string path;
-  for (const fs::path& f : folders) path += f.string() + ":";
+  for (const fs::path& f : vendor.folders) path += f.string() + ":";
   const char* old = std::getenv("LD_LIBRARY_PATH");
   std::vector<std::string> env = {"LD_LIBRARY_PATH=" + path + (old ? old : ""),
                                   "__GLX_VENDOR_LIBRARY_NAME=shadelab"};
-  const fs::path egl_json = folders.front() / "shadelab.json";
-  if (fs::exists(egl_json)) env.push_back("__EGL_VENDOR_LIBRARY_FILENAMES=" + egl_json.string());
+  if (!vendor.egl_json.empty() && fs::exists(vendor.egl_json))
+    env.push_back("__EGL_VENDOR_LIBRARY_FILENAMES=" + vendor.egl_json.string());
   if (!display.empty()) env.push_back("DISPLAY=" + display);
   if (!o.capture.empty()) env.push_back(std::string(gl::platform::run_link::kCaptureVariable) + "=1");
   if (!o.size.empty()) env.push_back(std::string(gl::platform::run_link::kSizeVariable) + "=" + o.size);
@@ -165,8 +176,8 @@ int report(const RunOptions& o, const run::ChildResult& r) {
 
 int run_program(const RunOptions& o) {
   if (!validate(o)) return kExitBadInput;
-  const std::vector<fs::path> folders = library_folders();
-  if (folders.empty()) {
+  const VendorFiles vendor = vendor_files();
+  if (vendor.folders.empty()) {
     std::cerr << "shadelab run: libGLX_shadelab.so.0 not found beside this executable (build the "
                  "shadelab-glx target, or install shadelab)\n";
     return kExitFailure;
@@ -184,7 +195,7 @@ int run_program(const RunOptions& o) {
   }
   run::ChildOptions child;
   child.command = o.command;
-  child.environment = program_environment(o, folders, xvfb.display());
+  child.environment = program_environment(o, vendor, xvfb.display());
   child.frame_socket = o.frames > 0 || !o.capture.empty();
   child.stop_after_frames = o.frames;
   child.timeout_seconds = o.timeout;
