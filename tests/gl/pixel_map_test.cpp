@@ -88,10 +88,13 @@ TEST_F(PixelMapTest, StencilMapOfHugeValuesIsUsable) {
   EXPECT_EQ(f[0], 2147483520.0f);
   EXPECT_EQ(f[1], 0.0f);
   glPixelTransferi(GL_MAP_STENCIL, GL_TRUE);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);  // rows of 2 bytes, unpadded
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
   const std::array<GLubyte, 4> indices = {0, 1, 2, 3};
   glRasterPos2f(-1.0f, -1.0f);
   glDrawPixels(2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, indices.data());
   std::array<GLubyte, 4> stencil{};
+  glPixelTransferi(GL_MAP_STENCIL, GL_FALSE);  // read back as stored (reading maps too)
   glReadPixels(0, 0, 2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, stencil.data());
   EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   // Indices 0 and 2 map through entry 0 (2147483520: low byte 0x80), 1 and 3 through entry 1.

@@ -248,6 +248,9 @@ static void textured(void) {
 }
 
 static GLubyte to_byte(float v) { return (GLubyte)(v < 0 ? 0 : v > 1 ? 255 : v * 255.0f + 0.5f); }
+/* The low byte of v truncated to an integer (0 for what no int holds): values past 255 wrap
+ * rather than being converted to GLubyte directly, which C leaves undefined. */
+static GLubyte low_byte(float v) { return (GLubyte)(v > -2e9f && v < 2e9f ? (unsigned)(int)v & 0xffu : 0u); }
 
 /* The top rows: the raster state of several positions from glGet, as pixels. */
 static void queries(void) {
@@ -288,11 +291,11 @@ static void queries(void) {
     glGetFloatv(GL_CURRENT_RASTER_DISTANCE, &dist);
     glGetIntegerv(GL_CURRENT_RASTER_POSITION_VALID, &valid);
     const GLubyte px[6][4] = {
-        {(GLubyte)ipos[0], (GLubyte)ipos[1], to_byte(pos[2]), (GLubyte)(pos[3] * 50.0f)},
-        {(GLubyte)(pos[0] * 4.0f), (GLubyte)(pos[1] * 4.0f), (GLubyte)(valid * 255), 255},
+        {(GLubyte)ipos[0], (GLubyte)ipos[1], to_byte(pos[2]), low_byte(pos[3] * 50.0f)},
+        {low_byte(pos[0] * 4.0f), low_byte(pos[1] * 4.0f), (GLubyte)(valid * 255), 255},
         {to_byte(col[0]), to_byte(col[1]), to_byte(col[2]), to_byte(col[3])},
         {to_byte(tc[0]), to_byte(tc[1]), to_byte(tc[2]), to_byte(tc[3])},
-        {(GLubyte)(dist * 2.0f), (GLubyte)(dist * 50.0f), 0, 255},
+        {low_byte(dist * 2.0f), low_byte(dist * 50.0f), 0, 255},
         {0, 0, 0, 255},
     };
     for (int i = 0; i < 6; ++i, ++n) memcpy(row + n * 4, px[i], 4);
