@@ -254,33 +254,41 @@ PixelTarget framebuffer_target(Framebuffer& fb) {
 // in the cache, and the tile written out once with streaming stores. Clearing it in the
 // framebuffer would first read every line of it from memory (the stores of a clear fetch the
 // lines they write), and evict it again when the next tile is drawn. Any other tile is
-// cleared in place (when pending) and drawn in the framebuffer.
+// cleared in place (when pending) and drawn in the framebuffer. Depth is read and written
+// only under the depth test: when no draw of the tile tests it, the tile's depth is neither
+// loaded, cleared nor written out, and its pending clear stays pending (for a later draw or
+// apply_pending_clears).
 template <class Jobs>
 void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Jobs& jobs, WorkerScratch& ws) {
-  PipelineContext::PendingClears& p = impl.pending;
-  const std::uint8_t what = pending_for(p, fb) ? p.tiles[std::size_t(tile)] : 0;
+  using Clears = PipelineContext::PendingClears;
+  Clears& p = impl.pending;
+  bool with_depth = false, simd = true;
+  for (const DrawJob* job : jobs) {
+    with_depth = with_depth || job->frag->depth_test;
+    simd = simd && !job->plan.scalar_fragments;
+  }
+  const std::uint8_t used = with_depth ? Clears::kColor | Clears::kDepth : Clears::kColor;
+  const std::uint8_t what = pending_for(p, fb) ? p.tiles[std::size_t(tile)] & used : 0;
   const int columns = tile_columns(fb);
   const int x0 = (tile % columns) * kTileSize, y0 = (tile / columns) * kTileSize;
-  bool buffered = what != 0 && x0 + kTileSize <= fb.width && y0 + kTileSize <= fb.height;
-  for (const DrawJob* job : jobs) buffered = buffered && !job->plan.scalar_fragments;
-  if (!buffered) {
-    if (what) clear_tile(fb, p, tile, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, false);
+  if (what == 0 || !simd || x0 + kTileSize > fb.width || y0 + kTileSize > fb.height) {
+    if (what) clear_tile(fb, p, tile, used, false);
     ws.target = framebuffer_target(fb);
     ws.bound.on = false;
     for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
     return;
   }
-  p.tiles[std::size_t(tile)] = 0;
+  p.tiles[std::size_t(tile)] &= std::uint8_t(~what);
   if (!ws.tile) ws.tile = std::make_unique<TileBuffer>();
   TileBuffer& b = *ws.tile;
   const std::size_t first = std::size_t(y0) * std::size_t(fb.width) + std::size_t(x0);
   const TileRows rows{reinterpret_cast<std::uint32_t*>(fb.color.data()) + first, fb.depth.data() + first,
                       std::size_t(fb.width)};
-  load_tile(b, rows, what, p.color, p.depth);
+  load_tile(b, rows, what, p.color, p.depth, with_depth);
   ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0, fb.stencil.data(), std::size_t(fb.width)};
-  ws.bound = {true, (what & PipelineContext::PendingClears::kDepth) != 0, p.depth};
+  ws.bound = {true, (what & Clears::kDepth) != 0, p.depth};
   for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
-  store_tile(b, rows);
+  store_tile(b, rows, with_depth);
   fence_streams();
 }
 

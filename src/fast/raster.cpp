@@ -562,6 +562,18 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   }
 }
 
+// Before entry i of a tile's bin is set up: the triangle records of the entry 8 ahead and the
+// vertices of the entry 4 ahead are asked for (prefetch_setup), so that their loads overlap
+// the rasterizing of the entries before them.
+HWY_INLINE void prefetch_ahead(const DrawJob& job, int c, const std::vector<std::uint32_t>& bin, std::size_t i) {
+  constexpr std::size_t kRecords = 8, kVertices = 4;
+  if (i + kRecords < bin.size()) prefetch_setup(job, c, bin[i + kRecords], false);
+  if (i + kVertices < bin.size()) prefetch_setup(job, c, bin[i + kVertices], true);
+  if (i == 0) {  // the first entries had no one to ask for them
+    for (std::size_t k = 1; k < std::min(kRecords, bin.size()); ++k) prefetch_setup(job, c, bin[k], false);
+  }
+}
+
 // A tile of a draw with smooth lines or points: their triangles take the coverage path, the
 // others raster_triangle. Out of line, so that RasterTile's own loop (the triangles' hot
 // path, raster_triangle inlined) is compiled as it is without it.
@@ -570,7 +582,10 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const int lanes = int(hn::Lanes(DD()));
   TriSetup t;
   for (int c = 0; c < job.chunk_count; ++c) {
-    for (std::uint32_t entry : job.chunks[std::size_t(c)].bins[std::size_t(tile)]) {
+    const std::vector<std::uint32_t>& bin = job.chunks[std::size_t(c)].bins[std::size_t(tile)];
+    for (std::size_t i = 0; i < bin.size(); ++i) {
+      prefetch_ahead(job, c, bin, i);
+      const std::uint32_t entry = bin[i];
       if (!setup_triangle(job, c, entry, tx, ty, t)) continue;
       if (!t.coverage || job.plan.scalar_fragments) {
         raster_triangle(job, t, ws);
@@ -592,13 +607,16 @@ void RasterTile(const DrawJob& job, int tile, WorkerScratch& ws) {
   const int tx = (tile % job.tiles_x) * kTileSize, ty = (tile / job.tiles_x) * kTileSize;
   TriSetup t;
   for (int c = 0; c < job.chunk_count; ++c) {
-    for (std::uint32_t entry : job.chunks[std::size_t(c)].bins[std::size_t(tile)]) {
-      if (setup_triangle(job, c, entry, tx, ty, t)) raster_triangle(job, t, ws);
+    const std::vector<std::uint32_t>& bin = job.chunks[std::size_t(c)].bins[std::size_t(tile)];
+    for (std::size_t i = 0; i < bin.size(); ++i) {
+      prefetch_ahead(job, c, bin, i);
+      if (setup_triangle(job, c, bin[i], tx, ty, t)) raster_triangle(job, t, ws);
     }
   }
 }
 
-void LoadTile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint32_t clear_color, float clear_depth) {
+void LoadTile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint32_t clear_color, float clear_depth,
+              bool with_depth) {
   const hn::ScalableTag<std::uint32_t> du;
   const hn::ScalableTag<float> df;
   const std::size_t n = hn::Lanes(du);
@@ -614,6 +632,7 @@ void LoadTile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint
     } else {
       for (std::size_t i = 0; i < kTileSize; i += n) hn::Store(hn::LoadU(du, from.color + row + i), du, c + i);
     }
+    if (!with_depth) continue;
     if (depth) {
       for (std::size_t i = 0; i < kTileSize; i += n) hn::Store(dv, df, d + i);
     } else {
@@ -635,7 +654,7 @@ HWY_INLINE void stream_row(D d, T* dst, const T* src) {
   for (; i < std::size_t(kTileSize); i += n4) hn::Stream(hn::LoadU(d4, src + i), d4, dst + i);
 }
 
-void StoreTile(const TileBuffer& b, const TileRows& to) {
+void StoreTile(const TileBuffer& b, const TileRows& to, bool with_depth) {
   const hn::ScalableTag<std::uint32_t> du;
   const hn::ScalableTag<float> df;
   const bool aligned = (reinterpret_cast<std::uintptr_t>(to.color) | reinterpret_cast<std::uintptr_t>(to.depth) |
@@ -644,10 +663,10 @@ void StoreTile(const TileBuffer& b, const TileRows& to) {
     const std::size_t row = std::size_t(r) * to.stride;
     if (aligned) {
       stream_row(du, to.color + row, b.color + r * kTileSize);
-      stream_row(df, to.depth + row, b.depth + r * kTileSize);
+      if (with_depth) stream_row(df, to.depth + row, b.depth + r * kTileSize);
     } else {
       std::memcpy(to.color + row, b.color + r * kTileSize, kTileSize * sizeof(std::uint32_t));
-      std::memcpy(to.depth + row, b.depth + r * kTileSize, kTileSize * sizeof(float));
+      if (with_depth) std::memcpy(to.depth + row, b.depth + r * kTileSize, kTileSize * sizeof(float));
     }
   }
 }
@@ -663,11 +682,13 @@ HWY_EXPORT(LoadTile);
 HWY_EXPORT(StoreTile);
 
 void load_tile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint32_t clear_color,
-               float clear_depth) {
-  HWY_DYNAMIC_DISPATCH(LoadTile)(b, from, clear, clear_color, clear_depth);
+               float clear_depth, bool with_depth) {
+  HWY_DYNAMIC_DISPATCH(LoadTile)(b, from, clear, clear_color, clear_depth, with_depth);
 }
 
-void store_tile(const TileBuffer& b, const TileRows& to) { HWY_DYNAMIC_DISPATCH(StoreTile)(b, to); }
+void store_tile(const TileBuffer& b, const TileRows& to, bool with_depth) {
+  HWY_DYNAMIC_DISPATCH(StoreTile)(b, to, with_depth);
+}
 
 void raster_tile(const DrawJob& job, int tile, WorkerScratch& ws) {
   HWY_DYNAMIC_DISPATCH(RasterTile)(job, tile, ws);

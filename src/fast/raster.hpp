@@ -19,13 +19,15 @@ struct TileRows {
 };
 
 /// Fills the tile buffer: colour with `clear_color` where `clear` has
-/// PendingClears::kColor, else from `from`; depth likewise.
+/// PendingClears::kColor, else from `from`; depth likewise, when `with_depth` (otherwise the
+/// buffer's depth is left as it is: no draw of the tile reads or writes depth).
 void load_tile(TileBuffer& b, const TileRows& from, std::uint8_t clear, std::uint32_t clear_color,
-               float clear_depth);
+               float clear_depth, bool with_depth);
 
-/// Writes the tile buffer out to `to` with streaming stores (the lines are not read first;
-/// to's rows should start on 16 bytes, else they are copied plainly). The caller fences
-/// them (SSE2's sfence) before another thread reads them.
-void store_tile(const TileBuffer& b, const TileRows& to);
+/// Writes the tile buffer's colour, and its depth when `with_depth`, out to `to` with
+/// streaming stores (the lines are not read first; to's rows should start on 16 bytes, else
+/// they are copied plainly). The caller fences them (SSE2's sfence) before another thread
+/// reads them.
+void store_tile(const TileBuffer& b, const TileRows& to, bool with_depth);
 
 }  // namespace shadelab::fast

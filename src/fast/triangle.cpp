@@ -102,6 +102,27 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   return true;
 }
 
+void prefetch_setup(const DrawJob& job, int chunk, std::uint32_t entry, bool vertices) {
+  const std::size_t stride = std::size_t(job.plan.layout.count);
+  const std::uint32_t index = entry & kBinIndexMask;
+  if (entry & kBinClipped) {
+    const SetupChunk& ch = job.chunks[std::size_t(chunk)];
+    if (!vertices) return __builtin_prefetch(&ch.clipped[index]);
+    const ClippedTriangle& ct = ch.clipped[index];
+    for (int k = 0; k < 3; ++k) {
+      __builtin_prefetch(&ch.clip_vertices[ct.v[k]]);
+      if (stride) __builtin_prefetch(&ch.clip_varyings[ct.v[k] * stride]);
+    }
+    return;
+  }
+  if (!vertices) return __builtin_prefetch(&job.triangles[index]);
+  const Triangle& tri = job.triangles[index];
+  for (int k = 0; k < 3; ++k) {
+    __builtin_prefetch(&job.vertices[tri[k]]);
+    if (stride) __builtin_prefetch(&job.varyings[tri[k] * stride]);
+  }
+}
+
 void expand_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const VaryingLayout& l = job.plan.layout;
   for (int k = 0; k < 3; ++k) expand_varyings(l, t.var[k], ws.attribs[k]);

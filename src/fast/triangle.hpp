@@ -34,6 +34,14 @@ struct TriSetup {
 bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
                     TriSetup& t);
 
+/// Asks the cache for what setup_triangle will read of bin entry `entry`, without waiting:
+/// its ClippedTriangle or Triangle (`vertices` false), or its three vertices and their
+/// varyings (`vertices` true; the entry's ClippedTriangle or Triangle is read, so it should
+/// have been asked for a few entries earlier). A tile's entries are spread over the chunk's
+/// arrays (a tile's points and line pieces were made anywhere in the draw), and their misses
+/// otherwise take most of a small primitive's time.
+void prefetch_setup(const DrawJob& job, int chunk, std::uint32_t entry, bool vertices);
+
 /// Edge e's value at the centre of pixel (x, y): exact, as the reference's edge_function.
 inline std::int64_t edge_at(const TriSetup& t, int e, int x, int y) {
   std::int64_t cx = std::int64_t(x) * detail::kSubpixelOne + detail::kSubpixelOne / 2;

@@ -249,6 +249,42 @@ TEST(FastDifferential, ClearLaterIsAClear) {
   }
 }
 
+// A pending depth clear outlives draws that do not test depth: their tiles' colour is drawn
+// (in the tile buffers) but their depth is left alone, still to be cleared; a later draw
+// that tests depth, or apply_pending_clears, clears it first. Both orders, both ways of
+// drawing (at once and deferred), against clearing at once.
+TEST(FastDifferential, DepthClearWaitsForADrawThatTestsDepth) {
+  for (bool deferred : {false, true}) {
+    for (bool second_tests_depth : {false, true}) {
+      PipelineContext ctx(2);
+      ctx.set_deferred(deferred);
+      RandomDraws random(77);
+      const glm::ivec2 size{3 * PipelineContext::kTileSize, 2 * PipelineContext::kTileSize + 10};
+      const Framebuffer initial = random.framebuffer(size);
+      RandomDraw first = random.draw(size), second = random.draw(size);
+      simd_only(first);
+      simd_only(second);
+      first.frag.depth_test = false;
+      second.frag.depth_test = second_tests_depth;
+      const glm::vec4 color{0.3f, 0.5f, 0.7f, 1.0f};
+      Framebuffer ref = initial;
+      ref.clear_color(color);
+      ref.clear_depth(0.6f);
+      VertexInput in_first = first.input(), in_second = second.input();
+      draw_triangles(ref, first.projection, first.viewport, first.frag, first.shade, in_first, nullptr, nullptr);
+      draw_triangles(ref, second.projection, second.viewport, second.frag, second.shade, in_second, nullptr, nullptr);
+      Framebuffer fast = initial;
+      ctx.clear_later(fast, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth, color, 0.6f);
+      draw_triangles(fast, first.projection, first.viewport, first.frag, first.shade, in_first, nullptr, &ctx);
+      ctx.finish_draws();
+      draw_triangles(fast, second.projection, second.viewport, second.frag, second.shade, in_second, nullptr, &ctx);
+      ctx.apply_pending_clears(fast);
+      ASSERT_EQ(compare_buffers(fast, ref), "")
+          << (deferred ? "deferred" : "at once") << (second_tests_depth ? ", then a depth-tested draw" : "");
+    }
+  }
+}
+
 // Clears started ahead on a worker (clear_ahead) are the clears left pending: for every
 // list of tiles (none, some, every tile, a tile twice, tiles out of range), with draws made
 // after it that reach cleared tiles and others, deferred or at once, on 1 to 4 threads (one
