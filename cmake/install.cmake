@@ -9,7 +9,7 @@
 # The core library is installed static, as it is built. Its C++ API (std::vector, std::string and
 # glm types in its structs, version 0.x) keeps no binary compatibility from one version to the
 # next, which a shared library would promise; static, a program carries the version it was built
-# with. Its link dependencies (libpng, Highway, tinyobjloader, stb, threads; glm for the headers)
+# with. Its link dependencies (libpng, libjpeg, Highway, tinyobjloader, stb, threads; glm for the headers)
 # are in the package: shadelabConfig.cmake finds them with find_dependency, shadelab.pc lists
 # them. libshadelab-gl.so has the core linked in, so C programs need none of them.
 include(CMakePackageConfigHelpers)

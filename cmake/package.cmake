@@ -6,7 +6,7 @@
 #    the ELF files with `file`): libc6, libstdc++6, libpng16-16, libhwy1, cpp-httplib, libX11 ...
 #  - the development packages that the headers, the CMake package and the pkg-config files
 #    need: glm is in the public headers (a PUBLIC dependency of shadelab::shadelab), and the
-#    static core library is linked with libpng, Highway, tinyobjloader and stb, which
+#    static core library is linked with libpng, libjpeg, Highway, tinyobjloader and stb, which
 #    shadelabConfig.cmake finds with find_dependency and shadelab.pc requires. The package
 #    is runtime and development files at once, so it depends on both.
 set(CPACK_GENERATOR DEB)
@@ -28,6 +28,6 @@ set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # fonts-dejavu-core: the contact sheets' labels; then the development packages (above).
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "fonts-dejavu-core, libglm-dev, libpng-dev, libhwy-dev, libtinyobjloader-dev, libstb-dev")
+    "fonts-dejavu-core, libglm-dev, libpng-dev, libjpeg62-turbo-dev, libhwy-dev, libtinyobjloader-dev, libstb-dev")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "xvfb, pkg-config")  # shadelab run --xvfb; the .pc files
 include(CPack)

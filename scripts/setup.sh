@@ -12,7 +12,9 @@ PACKAGES=(
   build-essential cmake ninja-build pkg-config ccache
   dpkg-dev file  # cpack -G DEB: dpkg-shlibdeps for the package's Depends, `file` to find its ELF files
   python3 khronos-api  # gl/api/generate.py: the GL entry points from the OpenGL registry (gl.xml)
-  libglm-dev nlohmann-json3-dev libpng-dev libstb-dev libcli11-dev libtinyobjloader-dev
+  libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev
+  libpng-dev libjpeg62-turbo-dev  # PNG read and written with libpng, JPEG read with libjpeg-turbo
+  libstb-dev  # stb_truetype (contact sheets' labels), stb_image_write (lecture, conformance, bench C programs)
   libgtest-dev libgmock-dev fonts-dejavu-core libhwy-dev libbenchmark-dev libcpp-httplib-dev
   libosmesa6-dev  # Mesa: the oracle of the GL conformance suite and the benchmarks
   # shadelab as a GLVND vendor (libGLX_shadelab) and its tests: X11, GLVND's vendor headers,

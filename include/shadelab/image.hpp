@@ -1,4 +1,4 @@
-// 8-bit RGBA images and PNG encoding. The top row comes first.
+// 8-bit RGBA images: PNG encoding, and reading PNG and JPEG files. The top row comes first.
 #pragma once
 
 #include <cstdint>
@@ -25,9 +25,18 @@ std::vector<std::uint8_t> encode_png(const Image& image);
 /// failed write never leaves a partial file. Returns false and sets `error` on failure.
 bool write_png(const Image& image, const std::string& path, std::string* error);
 
-/// Reads a PNG or JPEG file as RGBA. Returns false and sets `error` on failure, and, without
-/// decoding anything, when the file's header declares a side longer than `max_side` pixels
-/// (a small file can declare a huge image; decoding it would take gigabytes).
+/// Reads a PNG (libpng) or JPEG (libjpeg-turbo) file as RGBA, top row first: grey, grey with
+/// alpha, RGB, RGBA and palette PNGs of any bit depth (16-bit samples keep their high byte, tRNS
+/// becomes alpha), interlaced or not; baseline and progressive JPEGs in grey, YCbCr, RGB or
+/// Adobe CMYK. Other formats are refused. Returns false and sets `error` (naming the file and
+/// saying what is wrong) on failure, and, without decoding anything, when the file's header
+/// declares a side longer than `max_side` pixels (a small file can declare a huge image;
+/// decoding it would take gigabytes). A truncated file is an error.
 bool read_image(const std::string& path, Image& out, std::string* error, int max_side = 16384);
+
+/// The width and height in pixels that a PNG or JPEG file's header declares, read without
+/// decoding the image (for checking against a limit). Returns false and sets `error` when the
+/// file cannot be read, is neither PNG nor JPEG, or its header is invalid.
+bool read_image_size(const std::string& path, int& width, int& height, std::string* error);
 
 }  // namespace shadelab

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include <glm/geometric.hpp>
-#include <stb_image.h>
 
 #include "scene/scene_reader.hpp"
 #include "shadelab/image.hpp"
@@ -74,9 +73,10 @@ std::shared_ptr<const Texture> SceneReader::load_texture(const JsonValue& file, 
   std::string key = full + "|" + std::to_string(int(settings.wrap_s)) + "|" +
                     std::to_string(int(settings.min_filter)) + "|" + std::to_string(int(settings.mag_filter));
   if (auto it = textures_.find(key); it != textures_.end()) return it->second;
-  int w = 0, h = 0, channels = 0;
+  int w = 0, h = 0;
   const int limit = options_.max_texture_side;
-  if (stbi_info(full.c_str(), &w, &h, &channels) && (w > limit || h > limit)) {
+  // A header that cannot be read is reported by read_image below.
+  if (read_image_size(full, w, h, nullptr) && (w > limit || h > limit)) {
     r_.error(file, path, "the texture is " + std::to_string(w) + " x " + std::to_string(h) +
                              ", more than the limit of " + std::to_string(limit) + " x " +
                              std::to_string(limit) + " (--max-texture-size)");

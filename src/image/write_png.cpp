@@ -1,13 +1,11 @@
-// PNG encoding through libpng, atomic file writes, and image reading through stb_image.
+// PNG encoding through libpng and atomic file writes (reading is read_image.cpp's).
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <random>
 
 #include <png.h>
-#include <stb_image.h>
 
 #include "shadelab/image.hpp"
 
@@ -78,50 +76,6 @@ bool write_png(const Image& image, const std::string& path, std::string* error) 
     std::remove(tmp.c_str());
     return false;
   }
-  return true;
-}
-
-bool read_image(const std::string& path, Image& out, std::string* error, int max_side) {
-  // Only PNG and JPEG: stb_image would also take headerless formats (TGA) from almost any
-  // bytes, and its PNM reader reads past the end of short files.
-  unsigned char magic[8] = {};
-  {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) {
-      if (error) *error = "cannot read image " + path + ": " + std::strerror(errno);
-      return false;
-    }
-    f.read(reinterpret_cast<char*>(magic), sizeof magic);
-  }
-  static const unsigned char kPng[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  bool png = std::memcmp(magic, kPng, 8) == 0;
-  bool jpeg = magic[0] == 0xff && magic[1] == 0xd8 && magic[2] == 0xff;
-  if (!png && !jpeg) {
-    if (error) *error = "cannot read image " + path + ": not a PNG or JPEG file";
-    return false;
-  }
-  int w = 0, h = 0, channels = 0;
-  if (stbi_info(path.c_str(), &w, &h, &channels) && (w > max_side || h > max_side)) {
-    if (error) {
-      *error = "the image " + path + " is " + std::to_string(w) + " x " + std::to_string(h) +
-               ", more than the limit of " + std::to_string(max_side) + " x " + std::to_string(max_side);
-    }
-    return false;
-  }
-  stbi_uc* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) {
-    if (error) *error = "cannot read image " + path + ": " + stbi_failure_reason();
-    return false;
-  }
-  if (w <= 0 || h <= 0) {  // never an image without pixels
-    stbi_image_free(data);
-    if (error) *error = "cannot read image " + path + ": it has no pixels";
-    return false;
-  }
-  out.width = w;
-  out.height = h;
-  out.rgba.assign(data, data + std::size_t(w) * std::size_t(h) * 4);
-  stbi_image_free(data);
   return true;
 }
 
