@@ -33,14 +33,17 @@ std::string current_simd_target() { return HWY_DYNAMIC_DISPATCH(DispatchedTarget
 
 namespace {
 
-// Highway's name for `name`: its own names in any case ("avx2", "SSE4"), and "avx512" (AVX3)
-// and "scalar" (EMU128, the portable target) besides.
-std::string highway_name(const std::string& name) {
+// Whether `name` names target `t`: Highway's own name in any case ("avx2", "SSE4"), "avx512"
+// for AVX3, and "scalar" or "emu128" for the portable fallback, whichever of SCALAR and EMU128
+// this Highway compiled.
+bool names_target(const std::string& name, std::int64_t t) {
   std::string upper;
   for (char ch : name) upper += char(std::toupper(static_cast<unsigned char>(ch)));
-  if (upper == "AVX512") return "AVX3";
-  if (upper == "SCALAR") return "EMU128";
-  return upper;
+  const std::string target = hwy::TargetName(t);
+  if (upper == target) return true;
+  if (upper == "AVX512") return target == "AVX3";
+  if (upper == "SCALAR" || upper == "EMU128") return target == "SCALAR" || target == "EMU128";
+  return false;
 }
 
 }  // namespace
@@ -48,9 +51,8 @@ std::string highway_name(const std::string& name) {
 bool force_simd_target(const std::string& name) {
   hwy::SetSupportedTargetsForTest(0);
   if (name.empty()) return true;
-  const std::string wanted = highway_name(name);
   for (std::int64_t t : hwy::SupportedAndGeneratedTargets()) {
-    if (wanted == hwy::TargetName(t)) {
+    if (names_target(name, t)) {
       hwy::SetSupportedTargetsForTest(t);
       return true;
     }

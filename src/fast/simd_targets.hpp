@@ -15,7 +15,8 @@ std::vector<std::string> available_simd_targets();
 std::string current_simd_target();
 
 /// Restricts dispatch to the named target (one of available_simd_targets(), in any case, or
-/// "avx512" for AVX3 and "scalar" for EMU128); "" restores the automatic choice. Returns false
+/// "avx512" for AVX3 and "scalar" for the portable fallback, SCALAR or EMU128); "" restores
+/// the automatic choice. Returns false
 /// for a name not compiled or not supported by this CPU (dispatch is then automatic). Not
 /// thread-safe: call between draws.
 bool force_simd_target(const std::string& name);
