@@ -145,7 +145,7 @@ tsan_run() {
 stage "set-up and build (build/)" scripts/setup.sh --build
 stage "tests (build/)" ctest --test-dir build --output-on-failure -j "$jobs"
 [ "$quick" = 1 ] && exit 0
-stage "sanitizer build (build-asan/: clang, fuzz targets too)" asan_build
+stage "sanitizer build (build-asan/, clang)" asan_build
 stage "sanitizer tests (ASan + UBSan)" sanitizer_tests
 stage "fuzzing (fuzz/run.sh --ci, in build-asan/)" fuzz/run.sh --ci --build build-asan
 stage "ThreadSanitizer build (build-tsan/)" tsan_build
