@@ -81,7 +81,7 @@ struct CurrentAttribs {
 };
 
 /// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
-/// returns); draw.cpp translates them into the core's FragmentState.
+/// returns); draw_state.cpp translates them into the core's FragmentState.
 struct RasterState {
   Viewport viewport;
   bool depth_test = false;

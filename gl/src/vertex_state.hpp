@@ -1,8 +1,8 @@
 // The vertex path's state in a context (GL 1.1 sections 2.6-2.7): the primitive between
 // glBegin and glEnd with what glBegin fixed for it (transforms, enabled lights), its vertices
-// as they arrived, and the buffers draw.cpp's two vertex paths (glBegin/glEnd and the vertex
-// arrays) reuse from draw to draw. Plain data; draw.cpp fills and reads it, and nothing here
-// transforms, lights or draws.
+// as they arrived, and the buffers the two vertex paths (draw.cpp's glBegin/glEnd and
+// array_mesh.cpp's vertex arrays) reuse from draw to draw. Plain data; those two files fill
+// and read it, and nothing here transforms, lights or draws.
 #pragma once
 
 #include <GL/gl.h>
@@ -77,7 +77,7 @@ struct Primitive {
   std::vector<Light> lights;  // enabled lights only
 };
 
-/// Reused buffers of the vertex-array path (draw.cpp's draw_array_mesh): one entry per
+/// Reused buffers of the vertex-array path (array_mesh.cpp's draw_array_mesh): one entry per
 /// array element from the draw's smallest index to its largest, so a shared vertex is
 /// transformed and lit once.
 // Every array is written in full after each resize (resizing zeroes nothing).
