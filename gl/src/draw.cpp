@@ -88,10 +88,9 @@ struct Batch {
 // vertex's colours (a quad's first triangle; the primitive's colours, none while lighting is
 // deferred).
 Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch& batch) {
+  Triangle rotated;
+  if (provoking_last(t, rotated)) return rotated;
   const std::uint32_t* v = t.v;
-  if (v[0] == t.provoking) return {v[1], v[2], v[0]};
-  if (v[1] == t.provoking) return {v[2], v[0], v[1]};
-  if (v[2] == t.provoking) return {v[0], v[1], v[2]};
   const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
   const glm::vec4 texcoord = prim.texcoords.empty() ? glm::vec4(0, 0, 0, 1) : prim.texcoords[v[2]];
   return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord)};
