@@ -25,6 +25,9 @@
 namespace shadelab::gl {
 namespace {
 
+// A vertex's colours: lit by the core's light_point (src/lighting, the one lighting function;
+// this file keeps no copy of the equation) with the front material and, for two-sided
+// lighting, the back one at the negated normal; unlit, the current colour clamped.
 void light_vertex(const GlContext& c, const PrimitiveVertex& v, VertexColors& out) {
   const LightingState& l = c.lighting;
   if (!l.enabled) {
