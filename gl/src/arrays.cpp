@@ -1,6 +1,7 @@
 // Vertex arrays (GL 1.1 section 2.8): the four array pointers, glArrayElement, glDrawArrays and
 // glDrawElements. Each element becomes current attributes plus a vertex, exactly as the
-// equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest.
+// equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest,
+// or array_mesh.cpp draws the whole array in one go where that gives the same result.
 #include <algorithm>
 #include <cstdint>
 #include <cstring>

@@ -10,7 +10,7 @@
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
 #include "gl/src/dlist.hpp"
-#include "gl/src/draw.hpp"
+#include "gl/src/draw_state.hpp"
 #include "gl/src/pixels.hpp"
 
 namespace shadelab::gl {

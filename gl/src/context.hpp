@@ -1,7 +1,9 @@
 // GlContext: all the state of one OpenGL 1.1 context (the GL 1.1 specification's state
 // tables, chapter 6), its framebuffer and the caller's OSMesa buffer. Plain data plus the error
 // rule; the exec:: functions of the GL commands change it, draw.cpp hands primitives to the
-// core pipeline.
+// core pipeline. The larger features keep their state in their own headers, included here
+// (texture_state.hpp, vertex_state.hpp, pixel_state.hpp, dlist_state.hpp, eval_state.hpp,
+// feedback_state.hpp).
 // No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
 #pragma once
 
@@ -26,8 +28,8 @@
 #include "gl/src/eval_state.hpp"
 #include "gl/src/feedback_state.hpp"
 #include "gl/src/pixel_state.hpp"
-#include "gl/src/primitive.hpp"
-#include "gl/src/texformat.hpp"
+#include "gl/src/texture_state.hpp"
+#include "gl/src/vertex_state.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
 #include "shadelab/material.hpp"
@@ -79,7 +81,7 @@ struct CurrentAttribs {
 };
 
 /// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
-/// returns); draw.cpp translates them into the core's FragmentState.
+/// returns); draw_state.cpp translates them into the core's FragmentState.
 struct RasterState {
   Viewport viewport;
   bool depth_test = false;
@@ -160,63 +162,6 @@ struct PrimState {
   bool unfilled() const { return front_mode != GL_FILL || back_mode != GL_FILL; }
 };
 
-/// One level of a texture as glTexImage specified it (GL 1.1 section 3.8, table 6.16): what
-/// glGetTexLevelParameter reports and, for formats of more than 8 bits a component, the stored
-/// components (the core's RGBA8 level holds the rest: gl/src/texformat.hpp).
-struct TexImage {
-  bool defined = false;  // specified by glTexImage or glCopyTexImage (a proxy: accepted)
-  int width = 0, height = 0, border = 0;
-  GLint internal_format = GL_RGBA;  // as given; Mesa reports GL_RGBA for an undefined image
-  StoredFormat format;
-  std::vector<std::uint16_t> wide;  // format.components per texel when format.wide()
-};
-
-/// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
-/// levels and parameters in the core's form (what the pipeline samples), and what GL reports.
-struct TextureObject {
-  GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once bound; 0 before
-  Texture texture;
-  std::vector<TexImage> images;  // per level
-  float priority = 1.0f;
-};
-
-/// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
-/// makes the objects (as Mesa does), without a target until their first binding.
-struct TextureNames {
-  std::unordered_map<GLuint, std::shared_ptr<TextureObject>> objects;
-  GLuint next_name = 1;
-};
-
-/// A texture target's binding: the named object bound, or the target's default object (name 0).
-struct TextureBinding {
-  GLuint name = 0;
-  std::shared_ptr<TextureObject> object;
-  std::shared_ptr<TextureObject> default_object;
-};
-
-/// glTexGen state of one coordinate (GL 1.1 section 2.10.4). The eye plane is stored as given
-/// times the inverse of the modelview matrix at the call.
-struct TexGenCoord {
-  bool enabled = false;  // GL_TEXTURE_GEN_S .. Q
-  GLenum mode = GL_EYE_LINEAR;
-  glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
-};
-
-struct TextureState {
-  bool enabled_1d = false, enabled_2d = false;  // GL_TEXTURE_1D, GL_TEXTURE_2D
-  TextureBinding binding_1d, binding_2d;
-  // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
-  std::vector<TexImage> proxy_1d, proxy_2d;
-  std::shared_ptr<TextureNames> names;
-  GLenum env_mode = GL_MODULATE;
-  glm::vec4 env_color{0.0f};
-  std::array<TexGenCoord, 4> gen;  // s, t, r, q
-
-  TextureBinding& binding(GLenum target) { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
-  const TextureBinding& binding(GLenum target) const { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
-  bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
-};
-
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
@@ -235,93 +180,6 @@ struct ClientArrays {
   ClientArray vertex, normal{false, 3}, color, texcoord;
   ClientArray index{false, 1};                        // colour indices: current index only
   ClientArray edge_flag{false, 1, GL_UNSIGNED_BYTE};  // GLboolean elements
-};
-
-/// One vertex of a primitive being specified: its eye-space position and normal (lighting
-/// state cannot change between glBegin and glEnd).
-struct PrimitiveVertex {
-  glm::vec4 eye;
-  glm::vec3 normal{0.0f};  // eye space, or as given while Primitive::object_normals
-};
-
-/// A vertex's colours, lit as it arrived (or the current colour, unlit).
-struct VertexColors {
-  glm::vec4 front, back;
-  glm::vec3 front_secondary, back_secondary;
-};
-
-/// The primitive between glBegin and glEnd, with what stays fixed while it is specified.
-struct Primitive {
-  bool active = false;  // inside glBegin/glEnd
-  GLenum mode = GL_TRIANGLES;
-  std::vector<PrimitiveVertex> vertices;
-  // The vertices' colours, one per vertex, unless lighting is deferred (then empty): records
-  // of a lit primitive are less than half as large, to write in glVertex and read in glEnd.
-  std::vector<VertexColors> colors;
-  // The vertices' texture coordinates (s, t, r, q) after generation and the texture matrix,
-  // one per vertex while `textured` (else empty); q divides per fragment.
-  std::vector<glm::vec4> texcoords;
-  bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
-  // Begun by a display list being executed: llvmpipe then splits quads from their second
-  // vertex (docs/gl-conformance.md).
-  bool in_list = false;
-  // Drawn by glDrawElements: llvmpipe then splits quads from their second vertex
-  // (docs/gl-conformance.md).
-  bool from_elements = false;
-  bool continued = false;  // a part of the primitive was drawn before (line stipple, loops)
-  // Edge flags of the vertices (section 2.6.2), one per vertex while the polygon modes draw
-  // edges (polygon primitives with a face in GL_LINE or GL_POINT mode), else empty.
-  std::vector<std::uint8_t> edges;
-  bool edge_flags = false;
-  std::uint32_t stipple_counter = 0;  // the line stipple's position across parts
-  // Lighting left to the pipeline (SIMD, at draw time): while the material stays what it was
-  // at glBegin. A material change inside the primitive lights the vertices so far and ends
-  // the deferral (settle_lighting).
-  bool deferred_lighting = false;
-  // While lighting is deferred (smooth shading): normals kept as given and transformed to eye
-  // space by draw_vertices, not by each glVertex call.
-  bool object_normals = false;
-  bool textured = false;  // a texture applies, or GL_FEEDBACK reports them: texture coordinates are kept
-  // Fixed at glBegin:
-  glm::mat4 modelview{1.0f};
-  glm::mat3 normal_matrix{1.0f};
-  float rescale = 1.0f;
-  bool identity_texture_matrix = true;
-  glm::mat4 texture_matrix{1.0f};
-  std::vector<Light> lights;  // enabled lights only
-};
-
-/// Reused buffers of the vertex-array path (draw.cpp's draw_array_mesh): one entry per
-/// array element from the draw's smallest index to its largest, so a shared vertex is
-/// transformed and lit once.
-// Every array is written in full after each resize (resizing zeroes nothing).
-struct ArrayScratch {
-  detail::ScratchVector<glm::vec4> positions, colors;
-  detail::ScratchVector<glm::vec3> normals;
-  detail::ScratchVector<glm::vec4> texcoords;      // (s, t, r, q) after the texture matrix
-  detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
-  detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
-  detail::ScratchVector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
-  detail::ScratchVector<Triangle> triangles;
-  std::vector<PrimitiveTriangle> pieces;
-};
-
-/// Reused buffers of the glBegin/glEnd path (draw.cpp's draw_vertices): the arrays of one
-/// draw_triangles call, kept across primitives so that drawing allocates nothing once they
-/// have grown.
-struct ImmediateScratch {
-  // Every element is written after each resize (Batch::set): growing costs no zeroing.
-  detail::ScratchVector<glm::vec4> positions, colors, back_colors;
-  detail::ScratchVector<glm::vec3> normals, secondary, back_secondary;
-  detail::ScratchVector<glm::vec4> texcoords;
-  std::vector<Triangle> triangles;
-  std::vector<PrimitiveTriangle> pieces;
-  std::vector<std::uint8_t> triangle_flags;  // polygon modes: per triangle, its edges
-  std::vector<UnfilledTriangle> unfilled;
-  std::vector<PrimitiveLine> line_pieces;
-  std::vector<LineSegment> lines;
-  std::vector<std::uint32_t> points;
-  std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite
 };
 
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
@@ -350,11 +208,6 @@ struct TileMap {
   std::vector<unsigned char> clear_row;  // scratch: a row of the clear colour, caller's format
 };
 
-/// The window-system drawable a context draws into (gl/src/platform: GLX windows, pixmaps and
-/// pbuffers), told of what the GL does that concerns it: a flush (glFlush / glFinish, after
-/// the changed pixels were presented into its image: a single-buffered window shows them
-/// then) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
-/// viewport when resized). OSMesa buffers have none.
 /// One glPushAttrib entry (GL 1.1 section 6.1.14): the mask and a copy of the structs that
 /// hold the attribute groups' state, whatever the mask (pushes are rare); glPopAttrib
 /// (attrib.cpp) restores the groups the mask names, in Mesa's order.
@@ -403,6 +256,11 @@ struct ClientAttribRecord {
 inline constexpr int kMaxAttribStackDepth = 16;
 inline constexpr int kMaxClientAttribStackDepth = 16;
 
+/// The window-system drawable a context draws into (gl/src/platform: GLX windows, pixmaps and
+/// pbuffers), told of what the GL does that concerns it: a flush (glFlush / glFinish, after
+/// the changed pixels were presented into its image: a single-buffered window shows them
+/// then) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
+/// viewport when resized). OSMesa buffers have none.
 class SurfaceHooks {
  public:
   virtual void flushed(struct GlContext& c) = 0;

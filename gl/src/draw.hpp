@@ -1,6 +1,6 @@
-// The vertex path shared by glBegin/glEnd and the vertex arrays: per-vertex transformation and
-// lighting with the core's light_point, then primitives handed to the core's draw_triangles.
-// It never rasterizes or shades pixels itself.
+// The vertex path shared by glBegin/glEnd (draw.cpp) and the vertex arrays (array_mesh.cpp):
+// per-vertex transformation and lighting with the core's light_point, then primitives handed
+// to the core's draw_triangles. It never rasterizes or shades pixels itself.
 #pragma once
 
 #include <cstddef>
@@ -26,13 +26,6 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position);
 /// Draws what is left of the primitive and ends it (the caller's buffer is updated at the
 /// next flush).
 void end_primitive(GlContext& c);
-
-/// The per-fragment state of every fragment the context draws (the fragments of glDrawPixels,
-/// glCopyPixels and glBitmap use it with draw_fragments, GL 1.1 sections 3.6.4, 3.7).
-FragmentState rectangle_fragment_state(const GlContext& c);
-/// How those fragments are coloured: the active texture and its environment (and every
-/// per-fragment colour operation a primitive's fragments get after texturing); no lighting.
-ShadeState rectangle_shade_state(GlContext& c);
 
 /// Fills object-space attributes of array elements first .. first + n - 1: positions,
 /// normals and, when their pointers are not null, colours (unused under lighting) and

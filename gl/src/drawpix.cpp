@@ -14,7 +14,7 @@
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
 #include "gl/src/dlist.hpp"
-#include "gl/src/draw.hpp"
+#include "gl/src/draw_state.hpp"
 #include "gl/src/pixel_transfer.hpp"
 #include "gl/src/pixels.hpp"
 

@@ -1,7 +1,8 @@
 // The state of GL's selection and feedback modes (GL 1.1 sections 5.2, 5.3, table 6.31): the
 // render mode, the selection buffer with its hit and name stack, the feedback buffer, and the
 // observer through which the core pipeline reports a draw's primitives in either mode
-// (shadelab::PrimitiveObserver). The commands are in feedback.cpp.
+// (shadelab::PrimitiveObserver). The commands are in feedback.cpp. Plain data and
+// declarations: nothing here draws or writes the caller's buffers.
 #pragma once
 
 #include <GL/gl.h>

@@ -1,5 +1,5 @@
 // glFog{f,i}[v] (GL 1.1 section 3.9): the fog mode, density, start, end, index and colour.
-// State only: the core pipeline fogs fragments (ShadeState::fog, draw.cpp's fog_state).
+// State only: the core pipeline fogs fragments (ShadeState::fog, draw_state.cpp's fog_state).
 // Mesa's rules: a scalar glFog call with a vector parameter (GL_FOG_COLOR) sets its first
 // component (the others zero); glFogiv's colour maps integers to [-1, 1]; the colour is
 // clamped to [0, 1] when stored; a negative density is GL_INVALID_VALUE.

@@ -1,6 +1,6 @@
 // Points, lines, polygon modes and user clip planes (GL 1.1 sections 2.11, 3.3-3.5):
 // glPointSize, glLineWidth, glLineStipple, glPolygonMode, glClipPlane and glGetClipPlane.
-// State and validation only, with Mesa's errors; draw.cpp hands the state to the pipeline
+// State and validation only, with Mesa's errors; draw_state.cpp hands the state to the pipeline
 // (the edge flags are in current.cpp and arrays.cpp).
 #include <algorithm>
 #include <glm/matrix.hpp>

@@ -1,5 +1,6 @@
 // What an OSMesaContext handle points to: a GlContext (the handle type is declared by
-// <GL/osmesa.h> as `struct osmesa_context*`). Private to libshadelab-gl.
+// <GL/osmesa.h> as `struct osmesa_context*`). Private to libshadelab-gl. It adds no state of
+// its own to the GlContext and no window-system code: OSMesa is only a caller's buffer.
 #pragma once
 
 #include "gl/src/context.hpp"

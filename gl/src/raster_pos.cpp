@@ -2,9 +2,9 @@
 // position goes through the modelview and projection like a vertex, is clipped (a point
 // outside the view volume makes the raster position invalid and changes nothing else), is
 // mapped to window coordinates, and takes the vertex's data: the colour lit with the front
-// material (section 2.13) or the current colour, texture coordinates through the texture
-// matrix, and the eye-space distance for fog. Only state; glBitmap, glDrawPixels and
-// glCopyPixels draw at it.
+// material by the core's light_point (section 2.13; no copy of the equation here) or the
+// current colour, texture coordinates through the texture matrix, and the eye-space distance
+// for fog. Only state; glBitmap, glDrawPixels and glCopyPixels draw at it.
 #include <cmath>
 
 #include <glm/geometric.hpp>

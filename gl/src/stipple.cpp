@@ -1,7 +1,7 @@
 // glPolygonStipple and glGetPolygonStipple (GL 1.1 sections 3.5.2 and 6.1.5): the 32 x 32
 // pattern read from and written to client memory as a GL_BITMAP image through the unpack and
 // pack pixel-store state (pixels.hpp's BitmapLayout). State only: the core pipeline applies
-// it to polygons (FragmentState::stipple, draw.cpp).
+// it to polygons (FragmentState::stipple, draw_state.cpp).
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
 #include "gl/src/context.hpp"

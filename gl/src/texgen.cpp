@@ -1,7 +1,8 @@
 // Texture coordinate generation (GL 1.1 section 2.10.4): glTexGen{i,f,d}[v],
 // glGetTexGen{i,f,d}v, and the generated coordinates of a vertex (object linear, eye linear
 // with the eye plane taken through the inverse modelview of the call, sphere map), which
-// draw.cpp computes per vertex before the texture matrix. Errors are Mesa's (texgen.c).
+// draw.cpp and array_mesh.cpp compute per vertex before the texture matrix. Errors are Mesa's
+// (texgen.c).
 #include "gl/src/texgen.hpp"
 
 #include <cmath>

@@ -1,6 +1,8 @@
 // The OpenGL 1.x lighting equation (SPEC section 3; OpenGL 1.5 spec section 2.14.1), the one
 // function that flat, Gouraud and Phong shading all call. Everything here is in eye space.
-// It computes colours only: no transforms, no rasterization, no state.
+// It computes colours only: no transforms, no rasterization, no state. This is the definition
+// (src/lighting/lighting.cpp); the fast pipeline's SIMD form (src/fast/lighting-inl.h) is held
+// to it by differential tests, as lighting.cpp's opening comment says.
 #pragma once
 
 #include <span>

@@ -1,5 +1,6 @@
 // Private helpers for the built-in shapes: appending vertices, sampling a parametric surface on
 // a grid of (nu + 1) x (nv + 1) vertices and joining it with quads of a stated winding.
+// Building blocks only: no shape of its own, no transforms, no materials.
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,5 @@
 // The Utah teapot's control points and patches (see teapot_data.cpp). Private to geometry.
+// Data only: teapot.cpp tessellates the patches.
 #pragma once
 
 namespace shadelab::detail {

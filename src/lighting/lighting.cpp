@@ -1,5 +1,21 @@
 // The OpenGL 1.x lighting equation (GL 1.5 spec, section 2.14.1), once, for every shading
 // mode. light_point and explain_point share one implementation; explain_point records terms.
+// This is the definition; tests/lighting/lighting_test.cpp checks it term by term against
+// values worked out by hand. Elsewhere the equation is only called or, once, re-expressed:
+// - The reference pipeline (src/pipeline/draw.cpp, whose shade_fragment the fast pipeline's
+//   per-fragment path shares), the fast pipeline's vertex stage where its SIMD form does not
+//   apply (src/fast/vertex_stage.cpp), "explain this pixel" (src/explain) and the GL library
+//   (gl/src/draw.cpp's light_vertex, gl/src/raster_pos.cpp) call light_point; the GL library
+//   keeps no copy of the equation.
+// - The fast pipeline's batched SIMD form, src/fast/lighting-inl.h (its per-draw constants
+//   from src/fast/lighting_setup.cpp), evaluates the same equation over SIMD lanes: per
+//   vertex operation for operation but for the powers, per pixel within a few float
+//   roundings. The fast pipeline's differential tests hold it to light_point through the
+//   reference pipeline:
+//   tests/fast/differential_test.cpp (FastDifferential: randomized lit draws in every shading
+//   mode, on 1 to 3 threads and on every SIMD target; overflowing specular powers; non-finite
+//   normals) and tests/fast/scene_differential_test.cpp (FastScenes: every scene file in every
+//   shading mode), each pixel within 1/255. A change here must be made there too.
 #include "shadelab/lighting.hpp"
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // The reference pipeline's per-draw context and its fragment path, shared by its triangles
-// (draw.cpp) and its lines, points and unfilled polygons (draw_prims.cpp). Private.
+// (draw.cpp) and its lines, points and unfilled polygons (draw_prims.cpp). Private. The
+// context only points at the draw's arguments: nothing is kept from one draw to the next.
 #pragma once
 
 #include <vector>

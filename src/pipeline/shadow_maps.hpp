@@ -1,4 +1,6 @@
-// Shadow maps for a scene's lights (private to the scene front end).
+// Shadow maps for a scene's lights (private to the scene front end): depth drawn from each
+// light that casts shadows. It only builds the maps; lighting reads them through
+// ShadowMap::visibility.
 #pragma once
 
 #include <vector>

@@ -1,5 +1,6 @@
 // Private interfaces between the pipeline's stages: the clip-space vertex with its attributes,
-// the clipper, and the reference rasterizer. Not part of the public API.
+// the clipper, and the reference rasterizer. Not part of the public API. Stateless functions:
+// each stage takes what it works on and keeps nothing between calls.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 // Readable JSON syntax-error messages ("expected '}' or ',' after an object member, got 'x'")
 // made from nlohmann-json's parse errors and the text around the offending token. Private to
-// the scene reader.
+// the scene reader. Text only: it neither parses nor reports.
 #pragma once
 
 #include <cstddef>

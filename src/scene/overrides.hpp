@@ -1,5 +1,6 @@
 // --set overrides ("key.path[2].x=value") applied to a located JSON tree before validation.
-// Private to the scene reader.
+// Private to the scene reader. It only edits the tree: validation comes after, and problems
+// are diagnostics, never prints or exceptions.
 #pragma once
 
 #include <string>

@@ -2,6 +2,8 @@
 // into a Scene. Its parts live in scene_reader.cpp (image, camera, lights), object_reader.cpp
 // (materials, objects, transforms), shape_reader.cpp (shapes and meshes, sized before they are
 // built) and extras_reader.cpp (textures, planar shadows). Private to the scene module.
+// Every problem becomes a diagnostic and reading goes on; it never prints or throws on bad
+// input.
 #pragma once
 
 #include <map>

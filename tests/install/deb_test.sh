@@ -49,6 +49,10 @@ for f in /usr/bin/shadelab "$libdir"/libshadelab.a /usr/include/shadelab/render.
          "$libdir"/pkgconfig/shadelab-glut.pc /usr/share/shadelab/scenes/teapot.json; do
   grep -qx -- "$f" "$out/files.txt" || fail "$f not in the package"
 done
+# Every public header of the source tree, the parts pipeline.hpp includes among them.
+for h in $(cd "$source/include" && find shadelab -name '*.hpp'); do
+  grep -qx -- "/usr/include/$h" "$out/files.txt" || fail "/usr/include/$h not in the package"
+done
 # Nothing outside /usr, no header straight in /usr/include, nothing named like the system's GL
 # libraries in the library folder, no link-time name for the vendors (GLVND loads them by soname).
 if grep -v -e '^/$' -e '^/usr/' "$out/files.txt"; then fail "files outside /usr"; fi

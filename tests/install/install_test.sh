@@ -33,6 +33,10 @@ for f in bin/shadelab "$libdir"/libshadelab.a include/shadelab/render.hpp \
          share/shadelab/scenes/teapot.json; do
   [ -e "$prefix/$f" ] || fail "$f not installed"
 done
+# Every public header of the source tree, the parts pipeline.hpp includes among them.
+for h in $(cd "$source/include" && find shadelab -name '*.hpp'); do
+  [ -e "$prefix/include/$h" ] || fail "include/$h not installed"
+done
 # No installed header may shadow the system's: nothing directly in include/ but the two folders.
 extra=$(ls "$prefix/include" | grep -v -x -e shadelab -e shadelab-gl || true)
 [ -z "$extra" ] || fail "unexpected in include/: $extra"

@@ -1,0 +1,130 @@
+// The core pipeline's per-draw state from GL's (GL 1.1 chapter 4, sections 3.3-3.5 and 3.9):
+// depth, stencil, blending, logic op, scissor, alpha test, colour mask, polygon offset and
+// stipple, polygon modes, lines, points and clip planes into FragmentState; glFog into
+// FogState. Translation only: no GL state changes and no drawing here.
+#include "gl/src/draw_state.hpp"
+
+#include <algorithm>
+#include <cstdint>
+
+#include "gl/src/texture.hpp"
+
+namespace shadelab::gl {
+namespace {
+
+CompareFunc compare_func(GLenum f) {
+  switch (f) {
+    case GL_NEVER: return CompareFunc::kNever;
+    case GL_LESS: return CompareFunc::kLess;
+    case GL_EQUAL: return CompareFunc::kEqual;
+    case GL_LEQUAL: return CompareFunc::kLequal;
+    case GL_GREATER: return CompareFunc::kGreater;
+    case GL_NOTEQUAL: return CompareFunc::kNotequal;
+    case GL_GEQUAL: return CompareFunc::kGequal;
+    default: return CompareFunc::kAlways;
+  }
+}
+
+StencilOp stencil_op(GLenum op) {
+  switch (op) {
+    case GL_ZERO: return StencilOp::kZero;
+    case GL_REPLACE: return StencilOp::kReplace;
+    case GL_INCR: return StencilOp::kIncr;
+    case GL_DECR: return StencilOp::kDecr;
+    case GL_INVERT: return StencilOp::kInvert;
+    default: return StencilOp::kKeep;
+  }
+}
+
+BlendFactor blend_factor(GLenum f) {
+  switch (f) {
+    case GL_ZERO: return BlendFactor::kZero;
+    case GL_SRC_COLOR: return BlendFactor::kSrcColor;
+    case GL_ONE_MINUS_SRC_COLOR: return BlendFactor::kOneMinusSrcColor;
+    case GL_DST_COLOR: return BlendFactor::kDstColor;
+    case GL_ONE_MINUS_DST_COLOR: return BlendFactor::kOneMinusDstColor;
+    case GL_SRC_ALPHA: return BlendFactor::kSrcAlpha;
+    case GL_ONE_MINUS_SRC_ALPHA: return BlendFactor::kOneMinusSrcAlpha;
+    case GL_DST_ALPHA: return BlendFactor::kDstAlpha;
+    case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::kOneMinusDstAlpha;
+    case GL_SRC_ALPHA_SATURATE: return BlendFactor::kSrcAlphaSaturate;
+    default: return BlendFactor::kOne;
+  }
+}
+
+PolygonMode polygon_mode(GLenum mode) {
+  return mode == GL_LINE    ? PolygonMode::kLine
+         : mode == GL_POINT ? PolygonMode::kPoint
+                            : PolygonMode::kFill;
+}
+
+}  // namespace
+
+float raster_size(float v, float least, float max) {
+  return v == v ? std::clamp(v, least, max) : 1.0f;
+}
+
+FragmentState fragment_state(const GlContext& c) {
+  const RasterState& r = c.raster;
+  FragmentState f;
+  f.cull = !r.cull ? CullMode::kNone : r.cull_mode == GL_FRONT ? CullMode::kFront : CullMode::kBack;
+  f.front_ccw = r.front_face == GL_CCW;
+  f.depth_test = r.depth_test && c.depth_bits > 0;
+  f.depth_func = compare_func(r.depth_func);
+  f.depth_write = r.depth_mask;
+  f.blend = {r.blend, blend_factor(r.blend_src), blend_factor(r.blend_dst)};
+  // glDrawBuffer(GL_NONE) writes no colour (GL 1.1 section 4.2.1).
+  for (int i = 0; i < 4; ++i) f.color_mask[i] = r.color_mask[std::size_t(i)] && draws_color(c);
+  StencilState& s = f.stencil;
+  s.enabled = r.stencil_test && c.stencil_bits > 0;
+  s.func = compare_func(r.stencil_func);
+  s.ref = std::uint8_t(std::clamp(r.stencil_ref, 0, 255));
+  s.value_mask = std::uint8_t(r.stencil_value_mask & 0xffu);
+  s.write_mask = std::uint8_t(r.stencil_write_mask & 0xffu);
+  s.fail = stencil_op(r.stencil_fail);
+  s.depth_fail = stencil_op(r.stencil_zfail);
+  s.pass = stencil_op(r.stencil_zpass);
+  f.polygon_offset = r.polygon_offset_fill;
+  f.offset_factor = r.offset_factor;
+  f.offset_units = r.offset_units;
+  f.scissor = {r.scissor_test, r.scissor_x, r.scissor_y, r.scissor_width, r.scissor_height};
+  f.alpha_test = {r.alpha_test, compare_func(r.alpha_func), r.alpha_ref};
+  f.logic_op = {r.color_logic_op, LogicOp(r.logic_op - GL_CLEAR)};
+  f.stipple.enabled = r.polygon_stipple;
+  if (r.polygon_stipple) f.stipple.rows = r.stipple;
+  const PrimState& p = c.prims;
+  f.offset_line = p.offset_line;
+  f.offset_point = p.offset_point;
+  f.front_mode = polygon_mode(p.front_mode);
+  f.back_mode = polygon_mode(p.back_mode);
+  f.line = {raster_size(p.line_width, 1.0f, kMaxLineWidth), p.line_smooth,
+            p.line_stipple && p.stipple_pattern != 0xffff, p.stipple_pattern,
+            GLushort(p.stipple_repeat)};
+  f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
+  for (int i = 0; i < kMaxClipPlanes; ++i) {
+    f.clip.eye[std::size_t(i)] = p.clip_planes[std::size_t(i)];
+    if (p.clip_enabled[std::size_t(i)]) f.clip.enabled |= std::uint8_t(1u << i);
+  }
+  return f;
+}
+
+shadelab::FogState fog_state(const GlContext& c) {
+  const FogSettings& g = c.fog;
+  shadelab::FogState f;
+  f.enabled = g.enabled;
+  f.mode = g.mode == GL_LINEAR ? FogMode::kLinear : g.mode == GL_EXP2 ? FogMode::kExp2 : FogMode::kExp;
+  f.color = glm::vec3(g.color);
+  f.start = g.start, f.end = g.end, f.density = g.density;
+  return f;
+}
+
+FragmentState rectangle_fragment_state(const GlContext& c) { return fragment_state(c); }
+
+ShadeState rectangle_shade_state(GlContext& c) {
+  ShadeState shade;
+  shade.lighting = false;
+  texture_draw_state(c, shade);
+  return shade;
+}
+
+}  // namespace shadelab::gl

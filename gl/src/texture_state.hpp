@@ -1,0 +1,80 @@
+// The texture state of a context (GL 1.1 section 3.8, tables 6.15-6.16): texture objects by
+// name, shared between contexts that share them, each with its levels as glTexImage specified
+// them and in the core's form, the bindings of the 1D and 2D targets, the texture environment
+// and glTexGen's planes. Plain data; the commands are texture.cpp's, teximage.cpp's and their
+// neighbours', and the pipeline samples the core's Texture.
+#pragma once
+
+#include <GL/gl.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "gl/src/texformat.hpp"
+#include "shadelab/texture.hpp"
+
+namespace shadelab::gl {
+
+/// One level of a texture as glTexImage specified it (GL 1.1 section 3.8, table 6.16): what
+/// glGetTexLevelParameter reports and, for formats of more than 8 bits a component, the stored
+/// components (the core's RGBA8 level holds the rest: gl/src/texformat.hpp).
+struct TexImage {
+  bool defined = false;  // specified by glTexImage or glCopyTexImage (a proxy: accepted)
+  int width = 0, height = 0, border = 0;
+  GLint internal_format = GL_RGBA;  // as given; Mesa reports GL_RGBA for an undefined image
+  StoredFormat format;
+  std::vector<std::uint16_t> wide;  // format.components per texel when format.wide()
+};
+
+/// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
+/// levels and parameters in the core's form (what the pipeline samples), and what GL reports.
+struct TextureObject {
+  GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once bound; 0 before
+  Texture texture;
+  std::vector<TexImage> images;  // per level
+  float priority = 1.0f;
+};
+
+/// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
+/// makes the objects (as Mesa does), without a target until their first binding.
+struct TextureNames {
+  std::unordered_map<GLuint, std::shared_ptr<TextureObject>> objects;
+  GLuint next_name = 1;
+};
+
+/// A texture target's binding: the named object bound, or the target's default object (name 0).
+struct TextureBinding {
+  GLuint name = 0;
+  std::shared_ptr<TextureObject> object;
+  std::shared_ptr<TextureObject> default_object;
+};
+
+/// glTexGen state of one coordinate (GL 1.1 section 2.10.4). The eye plane is stored as given
+/// times the inverse of the modelview matrix at the call.
+struct TexGenCoord {
+  bool enabled = false;  // GL_TEXTURE_GEN_S .. Q
+  GLenum mode = GL_EYE_LINEAR;
+  glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
+};
+
+struct TextureState {
+  bool enabled_1d = false, enabled_2d = false;  // GL_TEXTURE_1D, GL_TEXTURE_2D
+  TextureBinding binding_1d, binding_2d;
+  // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
+  std::vector<TexImage> proxy_1d, proxy_2d;
+  std::shared_ptr<TextureNames> names;
+  GLenum env_mode = GL_MODULATE;
+  glm::vec4 env_color{0.0f};
+  std::array<TexGenCoord, 4> gen;  // s, t, r, q
+
+  TextureBinding& binding(GLenum target) { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
+  const TextureBinding& binding(GLenum target) const { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
+  bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
+};
+
+}  // namespace shadelab::gl
