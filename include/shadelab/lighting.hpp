@@ -52,6 +52,11 @@ struct LightingInput {
   const float* visibility = nullptr;
 };
 
+/// The spot factor (GL 1.5 eq. 2.5): 1 without a cone (cutoff 180), (-L . D)^exponent inside
+/// it, 0 outside it or when the spot direction is zero. `to_light` is the unit vector from the
+/// point to the light.
+float spot_factor(const Light& light, const glm::vec3& to_light);
+
 /// The lighting equation at one point. `lights` are in eye space; disabled ones are skipped.
 LitColor light_point(const LightModel& model, std::span<const Light> lights,
                      const Material& material, const LightingInput& in);

@@ -51,7 +51,7 @@ class PipelineContext {
   PipelineContext& operator=(const PipelineContext&) = delete;
   int threads() const;
   /// The SIMD instruction set the fast pipeline dispatches to on this CPU ("AVX3", "AVX2",
-  /// "SSE4", "SSSE3" or the portable "EMU128"): the best one compiled that the CPU runs, or
+  /// "SSE4", "SSSE3" or the portable fallback, "SCALAR" or "EMU128" as the Highway in use names it): the best one compiled that the CPU runs, or
   /// the one $SHADELAB_SIMD names ("avx512", "avx2", "sse4", "ssse3", "scalar"; read when the
   /// first context is made, ignored when that target is not available).
   static std::string simd_target();

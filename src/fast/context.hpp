@@ -1,5 +1,6 @@
 // What a PipelineContext owns: the thread pool and every buffer a draw reuses (vertex
-// output, bins, per-thread scratch), so that drawing in steady state allocates nothing.
+// output, bins, per-thread scratch), so that drawing in steady state allocates nothing. It must not hold
+// per-draw state across draws (a draw's job is filled afresh) nor anything of a front end.
 #pragma once
 
 #include <cstdint>

@@ -68,7 +68,7 @@ struct VaryingLayout {
   int count = 0;                                  // floats per vertex
 };
 
-/// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster.cpp):
+/// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster-inl.h):
 /// the general one, which reads the fragment state at every block, or one compiled for the
 /// usual state, with nothing left to decide per block (no fog, scissor, stipple, alpha test
 /// or logic op): the depth test kLess or kLequal writing
@@ -113,11 +113,11 @@ struct DrawPlan {
   bool fog = false;              ///< fogged colours (ShadeState::fog)
   detail::FogParams fog_params;
   bool alpha_test = false;       ///< colour before depth: the alpha test decides first
-  /// Interpolated colours computed as the reference does (raster.cpp's block_color): the
+  /// Interpolated colours computed as the reference does (raster-inl.h's block_color): the
   /// alpha test's alpha, or every channel for the logic op.
   bool exact_colors = false;
   float alpha_ref = 0.0f;        ///< the reference as an 8-bit value (detail::alpha_test)
-  /// Lanes of each block masked by the scissor box and the polygon stipple (raster.cpp).
+  /// Lanes of each block masked by the scissor box and the polygon stipple (raster-inl.h, kept_lanes).
   bool lane_masks = false;
   /// The pixels a draw may write: the framebuffer, cut by the scissor box (inclusive bounds;
   /// empty when x1 < x0). Setup bins no tile outside it.

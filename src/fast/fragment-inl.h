@@ -10,7 +10,7 @@
 // 1/255. Per-target code (Highway).
 //
 // The small loops over a block's rows, colour channels and edges carry `#pragma GCC unroll`
-// here and in raster.cpp: left as loops, GCC kept their arrays of vectors (Rgba, the edge
+// here and in raster-inl.h: left as loops, GCC kept their arrays of vectors (Rgba, the edge
 // values, the weights) in memory, storing and reloading every vector on the way; unrolled,
 // they stay in registers (the full-screen Gouraud fill took 38% less time).
 #if defined(SHADELAB_FAST_FRAGMENT_INL_H_) == defined(HWY_TARGET_TOGGLE)

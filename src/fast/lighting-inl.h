@@ -2,7 +2,9 @@
 // In its reference form (per-vertex lighting) every operation is the reference's float
 // operation in the reference's order (no FMA), so results are bitwise light_point's except the
 // powers (binary powering or exp(e log c) here, std::pow there); the per-pixel form is cheaper
-// and within a few roundings of it (Form).
+// and within a few roundings of it (Form). The differential tests that hold it to light_point:
+// FastDifferential (tests/fast/differential_test.cpp) and FastScenes
+// (tests/fast/scene_differential_test.cpp).
 // Per-target code: included by Highway dispatch units once per SIMD target.
 #if defined(SHADELAB_FAST_LIGHTING_INL_H_) == defined(HWY_TARGET_TOGGLE)
 #ifdef SHADELAB_FAST_LIGHTING_INL_H_

@@ -8,6 +8,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "shadelab/lighting.hpp"
+
 namespace shadelab::fast {
 
 namespace {
@@ -28,17 +30,6 @@ MaterialParams material_params(const LightModel& model, const Material& m) {
   p.shininess = m.shininess;
   p.phong_specular = m.specular_model == SpecularModel::kPhong;
   return p;
-}
-
-// lighting.cpp's spot_factor for a constant direction to the light.
-float spot_factor(const Light& light, const glm::vec3& to_light) {
-  if (light.spot_cutoff == 180.0f) return 1.0f;
-  glm::vec3 d = light.spot_direction;
-  float len = glm::length(d);
-  if (!(len > 0.0f)) return 0.0f;
-  float c = glm::dot(-to_light, d / len);
-  if (c < std::cos(glm::radians(light.spot_cutoff))) return 0.0f;
-  return std::pow(std::max(c, 0.0f), light.spot_exponent);
 }
 
 void directional(const Light& light, bool local_viewer, LightParams& p) {

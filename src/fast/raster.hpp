@@ -1,5 +1,7 @@
-// The fast rasterizer's entry point (raster.cpp): draws every triangle binned into one tile,
-// in submission order, into the job's framebuffer. Touches no pixel outside that tile.
+// The fast rasterizer's entry points: raster_tile (raster.cpp) draws every triangle binned into
+// one tile, in submission order, into the job's framebuffer, touching no pixel outside that
+// tile; load_tile and store_tile (tile_io.cpp) move a whole tile between the framebuffer and a
+// tile buffer.
 #pragma once
 
 #include "fast/draw_job.hpp"

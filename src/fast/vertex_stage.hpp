@@ -1,5 +1,6 @@
 // The fast vertex stage's entry point (vertex_stage.cpp): lights, projects, outcodes and maps
-// to window space a range of a draw's vertices, writing job.vertices, varyings and outcodes.
+// to window space a range of a draw's vertices, writing job.vertices, varyings and outcodes. It must not rasterize or touch the framebuffer:
+// clipping, setup and binning come after it (setup.cpp).
 #pragma once
 
 #include <cstddef>

@@ -26,12 +26,6 @@
 
 namespace shadelab {
 
-namespace {
-
-glm::vec3 rgb(const glm::vec4& v) { return glm::vec3(v); }
-
-// Spot factor (GL 1.5 eq. 2.5): 1 without a cone; (-L . D)^exponent inside it; 0 outside.
-// `to_light` is the unit vector from the point to the light.
 float spot_factor(const Light& light, const glm::vec3& to_light) {
   if (light.spot_cutoff == 180.0f) return 1.0f;
   glm::vec3 d = light.spot_direction;
@@ -43,6 +37,10 @@ float spot_factor(const Light& light, const glm::vec3& to_light) {
   // pow(0, 0) is 1 in C, as the GL equation wants for exponent 0 at the cone's centre line.
   return std::pow(std::max(c, 0.0f), light.spot_exponent);
 }
+
+namespace {
+
+glm::vec3 rgb(const glm::vec4& v) { return glm::vec3(v); }
 
 // Oren-Nayar's qualitative model: the Lambert cosine scaled by A + B max(0, cos(phi_i - phi_r))
 // sin(alpha) tan(beta). At roughness 0, A = 1 and B = 0: exactly Lambert.

@@ -1,0 +1,519 @@
+// The fast rasterizer's per-target building blocks (Highway: included once per SIMD target by
+// each unit that draws triangles): a block of two rows of as many pixels as the target has
+// double lanes, its coverage from exact integer edge functions held in doubles (below 2^53),
+// so coverage is the reference's; its depth, the reference's float plane (reference_raster.inl's
+// plane_depth); its fragments through simd_block, a kernel or the reference per fragment; and
+// raster_path, which walks a triangle's blocks. It must not choose a path (raster.cpp does) nor
+// know about tiles beyond the job's pixel target.
+//
+// raster_path's instantiations are the rasterizer's largest functions, so they are compiled in
+// units of their own, in parallel: raster.cpp (the kernels of the usual fragment state and the
+// tile loop), raster_general.cpp (simd_block inside and at the framebuffer's edge),
+// raster_coverage.cpp (smooth lines and points), raster_scalar.cpp (the reference path).
+#if defined(SHADELAB_FAST_RASTER_INL_H_) == defined(HWY_TARGET_TOGGLE)
+#ifdef SHADELAB_FAST_RASTER_INL_H_
+#undef SHADELAB_FAST_RASTER_INL_H_
+#else
+#define SHADELAB_FAST_RASTER_INL_H_
+#endif
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "fast/fragment-inl.h"
+#include "fast/triangle.hpp"
+#include "hwy/highway.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace shadelab::fast::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+/// A triangle drawn by simd_block in every block: `interior`, wholly inside the framebuffer;
+/// otherwise touching its right or bottom edge (raster_general.cpp).
+void raster_general(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior);
+/// A smooth line's or point's triangle on the SIMD path, its coverage applied to alpha
+/// (raster_coverage.cpp).
+void raster_coverage(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior);
+/// A triangle whose fragments take the reference per-fragment path (raster_scalar.cpp).
+void raster_scalar(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior);
+
+namespace {
+
+constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+
+// A block's depth and colour rows: in the framebuffer or, where a row leaves it (past its
+// right or bottom edge), a local copy of the part inside.
+struct BlockPixels {
+  float* depth[kRows];
+  std::uint32_t* color[kRows];
+  std::uint8_t* stencil[kRows];
+  alignas(64) float depth_copy[kRows][kMaxLanes];
+  alignas(64) std::uint32_t color_copy[kRows][kMaxLanes];
+  alignas(64) std::uint8_t stencil_copy[kRows][kMaxLanes];
+  std::size_t index[kRows];  // framebuffer index of each row's first pixel
+  int copied[kRows];         // pixels of the row inside the framebuffer, when copied; else 0
+};
+
+HWY_INLINE void open_block(const DrawJob& job, const PixelTarget& target, int x, int y, bool interior,
+                           BlockPixels& g) {
+  const bool stencil = job.frag->stencil.enabled;
+  if (interior) {  // every row inside the framebuffer
+    const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
+    #pragma GCC unroll 4
+    for (int r = 0; r < kRows; ++r) {
+      const std::size_t index = first + std::size_t(r) * target.stride;
+      g.depth[r] = job.frag->depth_test ? target.depth + index : nullptr;
+      g.color[r] = job.plan.writes_color ? target.color + index : nullptr;
+      g.stencil[r] = stencil ? target.stencil + std::size_t(y + r) * target.stencil_stride + std::size_t(x) : nullptr;
+      g.copied[r] = 0;
+    }
+    return;
+  }
+  Framebuffer& fb = *job.fb;
+  const std::size_t width = std::size_t(fb.width);
+  const std::size_t first = std::size_t(y) * width + std::size_t(x);
+  const int lanes = int(hn::Lanes(DD()));
+  const int valid = std::min(fb.width - x, lanes);
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const bool inside = y + r < fb.height;
+    g.index[r] = inside ? first + std::size_t(r) * width : 0;
+    g.depth[r] = job.frag->depth_test ? &fb.depth[g.index[r]] : nullptr;
+    g.color[r] = job.plan.writes_color ? reinterpret_cast<std::uint32_t*>(&fb.color[g.index[r] * 4]) : nullptr;
+    g.stencil[r] = stencil ? &fb.stencil[g.index[r]] : nullptr;
+    g.copied[r] = 0;
+    if (inside && valid == lanes) continue;
+    // A partial row: its lanes outside the framebuffer are never covered, but are loaded.
+    const int n = inside ? valid : 0;
+    g.copied[r] = n;
+    std::fill_n(g.depth_copy[r], lanes, 0.0f);
+    std::fill_n(g.color_copy[r], lanes, 0u);
+    std::fill_n(g.stencil_copy[r], lanes, std::uint8_t(0));
+    if (g.depth[r]) g.depth[r] = static_cast<float*>(std::memcpy(g.depth_copy[r], g.depth[r], std::size_t(n) * 4));
+    if (g.color[r]) g.color[r] = static_cast<std::uint32_t*>(std::memcpy(g.color_copy[r], g.color[r], std::size_t(n) * 4));
+    if (g.stencil[r]) g.stencil[r] = static_cast<std::uint8_t*>(std::memcpy(g.stencil_copy[r], g.stencil[r], std::size_t(n)));
+  }
+}
+
+inline void close_block(const DrawJob& job, const BlockPixels& g) {
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const std::size_t n = std::size_t(g.copied[r]);
+    if (!n) continue;
+    if (g.depth[r]) std::memcpy(&job.fb->depth[g.index[r]], g.depth[r], n * sizeof(float));
+    if (g.color[r]) std::memcpy(&job.fb->color[g.index[r] * 4], g.color[r], n * 4);
+    if (g.stencil[r]) std::memcpy(&job.fb->stencil[g.index[r]], g.stencil[r], n);
+  }
+}
+
+// A triangle's fragment counts, kept in registers while it is drawn (RenderStats at the end).
+struct GroupCounts {
+  std::uint64_t fragments = 0, shaded = 0;
+};
+
+// How a triangle's blocks are drawn: on the SIMD path, wholly inside the framebuffer (no
+// copies: the hot loop calls nothing, so its vectors stay in registers) or touching its right
+// or bottom edge; or fragment by fragment on the reference path.
+enum class Path { kInterior, kEdge, kScalar };
+
+// The interpolated colour channels [first, 4) of a block as the reference computes them
+// (exact_varying): primary plus secondary, or primary alone.
+HWY_INLINE void exact_color(const TriSetup& t, const TrianglePlanes& planes, const Weights& w, int first,
+                            Rgba& color, bool with_secondary = true) {
+  for (int c = first; c < 4; ++c) color.c[c] = exact_varying(t, w, planes.color[c].k);
+  if (!planes.has_secondary || !with_secondary) return;
+  for (int c = first; c < 3; ++c) color.c[c] = hn::Add(color.c[c], exact_varying(t, w, planes.secondary[c].k));
+}
+
+// What block_color needs of the block beyond its weights: where it is, its rows' edge values
+// (the texture's level of detail evaluates quads at rows the block does not hold) and the
+// lanes whose colours are used.
+struct BlockPlace {
+  int x, y;
+  const VD (*e)[3];
+  unsigned live;
+};
+
+// A textured block's colours (draw.cpp's shade_fragment): the primary colour, textured, then
+// the secondary colour added.
+HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const TrianglePlanes& planes, const Weights& w,
+                               const BlockPlace& at) {
+  VB secondary[3] = {hn::Zero(DB()), hn::Zero(DB()), hn::Zero(DB())};
+  Rgba color;
+  // The environment may replace the fragment's alpha with the texel's: its own alpha is then
+  // not needed as the reference computes it.
+  const TexturePlan& tp = job.plan.texture;
+  const bool alpha_replaced = tp.env == TextureEnvMode::kReplace && tp.format != TextureFormat::kLuminance &&
+                              tp.format != TextureFormat::kRgb;
+  const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform &&
+                     (job.frag->logic_op.enabled || !alpha_replaced);
+  const bool exact_all = exact && job.frag->logic_op.enabled;
+  if (job.plan.phong) {
+    color = phong_color(job, t, planes, w, secondary);
+  } else {
+    color = vertex_color(t, planes, w, false);
+    if (exact && !t.flat) exact_color(t, planes, w, exact_all ? 0 : 3, color, false);
+  }
+  texture_block(job, t, planes.texcoord, w, at.x, at.y, at.e, block_mask(at.live), color.c);
+  color.clamped = false;
+  if (!job.plan.phong && !planes.has_secondary) return color;
+  #pragma GCC unroll 3
+  for (int c = 0; c < 3; ++c) {
+    if (!job.plan.phong) {
+      const Plane& p = planes.secondary[c];
+      secondary[c] = exact_all && !t.flat ? exact_varying(t, w, p.k) : varying(t, planes, w, p);
+    }
+    color.c[c] = hn::Add(color.c[c], secondary[c]);
+  }
+  return color;
+}
+
+// The colours of a block's lanes: Gouraud, flat or Phong, textured, then fogged. Where a
+// difference in the last bit would change more than that bit of the result (the 8-bit alpha
+// the alpha test compares, the bytes a logic op combines), the interpolated colours are the
+// reference's own (flat and uniform colours and the exact planes already are).
+HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, const VD b0[kRows],
+                            const VD b1[kRows], VB f0, VB f1, const VB* coverage, const BlockPlace& at) {
+  if (!planes.ready) set_up_planes(job, t, planes);
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  Rgba color;
+  if (job.plan.texture.texture) {
+    color = textured_color(job, t, planes, w, at);
+  } else {
+    color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);
+    if (job.plan.exact_colors && !job.plan.phong && !t.flat && !planes.exact && !planes.uniform) {
+      exact_color(t, planes, w, job.frag->logic_op.enabled ? 0 : 3, color);
+    }
+  }
+  if (job.plan.fog) apply_fog(job.plan.fog_params, t, planes, w, color);
+  if (coverage) {  // a smooth line's or point's (Mesa multiplies it in at the very end)
+    color.c[3] = hn::Mul(color.c[3], *coverage);
+    color.clamped = false;
+  }
+  return color;
+}
+
+// A smooth line's or point's coverage at the block's pixel centres (raster/prims.cpp's
+// coverage_at, lane by lane: the affine functions in double, the rest in float): the alpha
+// factor, and the lanes a point discards cleared from `bits`.
+HWY_INLINE VB block_coverage(const detail::Coverage& c, int x, int y, unsigned& bits) {
+  const DD dd;
+  const DF df;
+  const DB db;
+  const VD xs = hn::Iota(dd, double(x) + 0.5);
+  VF u[kRows], v[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const VD ys = hn::Set(dd, double(y + r) + 0.5);
+    u[r] = hn::DemoteTo(df, hn::Add(hn::Add(hn::Set(dd, double(c.u0)), hn::Mul(hn::Set(dd, double(c.ux)), xs)),
+                                    hn::Mul(hn::Set(dd, double(c.uy)), ys)));
+    v[r] = hn::DemoteTo(df, hn::Add(hn::Add(hn::Set(dd, double(c.v0)), hn::Mul(hn::Set(dd, double(c.vx)), xs)),
+                                    hn::Mul(hn::Set(dd, double(c.vy)), ys)));
+  }
+  const VB ub = join_rows(df, u[0], u[kRows - 1]), vb = join_rows(df, v[0], v[kRows - 1]);
+  const VB one = hn::Set(db, 1.0f), a = hn::Set(db, c.a);
+  if (c.kind == detail::Coverage::Kind::kLine) {
+    return hn::Mul(clamp_unit(hn::Sub(a, hn::Abs(ub))), clamp_unit(hn::Sub(hn::Set(db, c.b), hn::Abs(vb))));
+  }
+  const VB d = hn::Add(hn::Mul(ub, ub), hn::Mul(vb, vb));
+  bits &= ~block_bits(hn::Lt(one, d));
+  const VB rim = hn::Mul(hn::Set(db, 1.0f / (1.0f - c.a)), hn::Sub(one, d));
+  return hn::IfThenElse(hn::Ge(a, d), rim, one);
+}
+
+/// apply_stencil_op on stencil values held in 32-bit lanes.
+HWY_INLINE hn::Vec<DUB> stencil_op(StencilOp op, hn::Vec<DUB> v, hn::Vec<DUB> ref) {
+  const DUB du;
+  const auto one = hn::Set(du, 1u);
+  switch (op) {
+    case StencilOp::kKeep: return v;
+    case StencilOp::kZero: return hn::Zero(du);
+    case StencilOp::kReplace: return ref;
+    case StencilOp::kIncr: return hn::Min(hn::Add(v, one), hn::Set(du, 0xffu));  // clamped (GL 1.1)
+    case StencilOp::kDecr: return hn::Sub(hn::Max(v, one), one);
+    case StencilOp::kInvert: return hn::Xor(v, hn::Set(du, 0xffu));
+  }
+  return v;
+}
+
+/// fragment_ops.cpp's depth_stencil_test for the lanes `bits` of a block: the stencil test,
+/// then the depth test for the lanes it passes, each lane's stencil value updated by the
+/// operation of its outcome (through the write mask) and its depth written where both pass.
+/// Returns the lanes that pass both.
+HWY_INLINE unsigned stencil_and_depth(const FragmentState& fs, VB z, unsigned bits, BlockPixels& g) {
+  const DF df;
+  const DB db;
+  const DUB du;
+  const hn::Rebind<std::uint8_t, DU> d8;
+  const StencilState& s = fs.stencil;
+  const hn::Vec<DUB> stored = join_rows(DU(), hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[0])),
+                                        hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[kRows - 1])));
+  const auto value_mask = hn::Set(du, s.value_mask);
+  const VB masked = hn::ConvertTo(db, hn::BitCast(DIB(), hn::And(stored, value_mask)));
+  const MB live = block_mask(bits);
+  const MB stencil_pass = hn::And(live, depth_compare(s.func, hn::Set(db, float(s.ref & s.value_mask)), masked));
+  MB depth_pass = stencil_pass;
+  if (fs.depth_test && !hn::AllFalse(db, stencil_pass)) {
+    depth_pass = hn::And(stencil_pass, depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
+    if (fs.depth_write) {
+      const unsigned written = block_bits(depth_pass);
+      if (written) store_rows(df, z, written, g.depth);
+    }
+  }
+  const auto ref = hn::Set(du, s.ref);
+  const auto fail = hn::RebindMask(du, hn::AndNot(stencil_pass, live));
+  const auto depth_fail = hn::RebindMask(du, hn::AndNot(depth_pass, stencil_pass));
+  const auto pass = hn::RebindMask(du, depth_pass);
+  auto next = hn::IfThenElse(fail, stencil_op(s.fail, stored, ref), stored);
+  next = hn::IfThenElse(depth_fail, stencil_op(s.depth_fail, stored, ref), next);
+  next = hn::IfThenElse(pass, stencil_op(s.pass, stored, ref), next);
+  const auto write_mask = hn::Set(du, s.write_mask);
+  next = hn::Or(hn::AndNot(write_mask, stored), hn::And(next, write_mask));
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    hn::StoreU(hn::DemoteTo(d8, hn::BitCast(hn::RebindToSigned<DU>(), row_of(DU(), next, r))), d8, g.stencil[r]);
+  }
+  return block_bits(depth_pass);
+}
+
+// The SIMD fragment path for the covered lanes `bits` of a block: depth test, then colour;
+// with the alpha test, the colour first, and depth only for the lanes it keeps (GL 1.1
+// section 4.1.3: the alpha test comes before the stencil and depth tests). A smooth line's or
+// point's `coverage` multiplies the colour's alpha before the alpha test sees it.
+template <Path kPath>
+HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                           GroupCounts& counts, int x, int y, unsigned bits, const VD e[kRows][3], const VD b0[kRows],
+                           const VD b1[kRows], VB f0, VB f1, VB z, const VB* coverage) {
+  const DF df;
+  const FragmentState& fs = *job.frag;
+  BlockPixels g;
+  open_block(job, target, x, y, kPath == Path::kInterior, g);
+  unsigned passed = bits;
+  Rgba color;
+  if (job.plan.alpha_test && !fs.stencil.enabled && fs.depth_test) {
+    // Nothing but the depth write depends on the order of the two tests here: the depth test
+    // first, then the colours of the lanes it passes only, alpha-tested, and their depth
+    // written (llvmpipe's early test and late write). The colours of hidden fragments of
+    // alpha-tested layers drawn front to back are not computed.
+    passed = block_bits(hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, g.depth))));
+    if (passed) {
+      color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, passed});
+      passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
+      if (fs.depth_write && passed) store_rows(df, z, passed, g.depth);
+    }
+    counts.fragments += unsigned(std::popcount(bits));
+    counts.shaded += unsigned(std::popcount(passed));
+    if (passed && job.plan.writes_color) write_colors(fs, color, passed, g.color);
+    if constexpr (kPath == Path::kEdge) close_block(job, g);
+    return;
+  }
+  if (job.plan.alpha_test) {  // the alpha test first (GL 1.1 section 4.1.3): it comes before the stencil test
+    color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, bits});
+    passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
+  }
+  if (fs.stencil.enabled) {
+    if (passed) passed = stencil_and_depth(fs, z, passed, g);
+  } else if (fs.depth_test && passed) {
+    MB live = hn::And(block_mask(passed), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
+    passed = block_bits(live);
+    if (fs.depth_write && passed) store_rows(df, z, passed, g.depth);
+  }
+  counts.fragments += unsigned(std::popcount(bits));
+  counts.shaded += unsigned(std::popcount(passed));
+  if (passed && job.plan.writes_color) {
+    if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, passed});
+    write_colors(fs, color, passed, g.color);
+  }
+  if constexpr (kPath == Path::kEdge) close_block(job, g);
+}
+
+// The lanes of the block at (x, y) that the scissor box and the polygon stipple (of polygons
+// only) keep (fragment_ops.hpp's pixel_kept). Blocks start at multiples of their width, which divides
+// 32: a row's lanes are consecutive bits of one stipple row.
+HWY_INLINE unsigned kept_lanes(const DrawJob& job, const TriSetup& t, int x, int y, int lanes) {
+  const DrawPlan& p = job.plan;
+  const unsigned all = (1u << lanes) - 1u;
+  unsigned columns = all;
+  if (x < p.box_x0) columns &= ~((1u << std::min(p.box_x0 - x, lanes)) - 1u);
+  if (x + lanes - 1 > p.box_x1) columns &= (1u << std::clamp(p.box_x1 - x + 1, 0, lanes)) - 1u;
+  const PolygonStipple& stipple = job.frag->stipple;
+  unsigned kept = 0;
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    const int row = y + r;
+    unsigned m = row < p.box_y0 || row > p.box_y1 ? 0u : columns;
+    if (stipple.enabled && t.polygon) m &= (stipple.rows[std::size_t(row & 31)] >> (x & 31)) & all;
+    kept |= m << (r * lanes);
+  }
+  return kept;
+}
+
+// A block of a triangle wholly inside the framebuffer, by one of the kernels compiled for
+// the usual fragment state (BlockKernel, draw_job.hpp): the same operations as simd_block's
+// for that state, without reading it per block; the opaque kernels' colours from the byte
+// planes.
+template <BlockKernel kKernel>
+HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                             GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
+                             const VD b1[kRows], VB f0, VB f1, VB z) {
+  constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
+  constexpr bool kBlend = kKernel == BlockKernel::kBlendLess || kKernel == BlockKernel::kBlendLequal;
+  const DF df;
+  const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
+  float* depth[kRows];
+  std::uint32_t* color[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    depth[r] = target.depth + first + std::size_t(r) * target.stride;
+    color[r] = target.color + first + std::size_t(r) * target.stride;
+  }
+  const VB stored = load_rows(df, depth);
+  const unsigned passed = block_bits(hn::And(block_mask(bits), kLequal ? hn::Le(z, stored) : hn::Lt(z, stored)));
+  counts.fragments += unsigned(std::popcount(bits));
+  counts.shaded += unsigned(std::popcount(passed));
+  if (!passed) return;
+  store_rows(df, z, passed, depth);
+  if (!planes.ready) set_up_planes(job, t, planes);
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  if (planes.exact || planes.has_secondary) return write_colors(*job.frag, vertex_color(t, planes, w), passed, color);
+  if constexpr (kBlend) {
+    const Rgba src = clamped(vertex_color(t, planes, w));
+    store_rows(DU(), pack_unorm8(blend_src_alpha(src, unit_colors(load_rows(DU(), color)))), passed, color);
+  } else {
+    store_rows(DU(), byte_plane_colors(planes, w), passed, color);
+  }
+}
+
+// Reference per-fragment operations for the covered lanes of one row (stencil, capture,
+// textures...).
+inline void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
+                unsigned bits, VD e0, VD e1, VF z) {
+  alignas(64) double w0[kMaxLanes], w1[kMaxLanes];
+  alignas(64) float zs[kMaxLanes];
+  hn::Store(e0, DD(), w0);
+  hn::Store(e1, DD(), w1);
+  hn::StoreU(z, DF(), zs);
+  for (; bits; bits &= bits - 1) {
+    int lane = std::countr_zero(bits);
+    scalar_fragment(job, t, ws, x + lane, y, w0[lane], w1[lane], zs[lane]);
+  }
+}
+
+// Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
+// for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
+template <Path kPath, BlockKernel kKernel, bool kCoverage>
+HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
+                      GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
+  const DD dd;
+  const DF df;
+  const int lanes = int(hn::Lanes(dd));
+  unsigned bits = 0;
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    auto cov = hn::And(hn::And(hn::Ge(e[r][0], thr[0]), hn::Ge(e[r][1], thr[1])), hn::Ge(e[r][2], thr[2]));
+    bits |= bits_of_mask(dd, cov) << (r * lanes);
+  }
+  if (!bits) return;
+  if constexpr (kKernel == BlockKernel::kGeneral) {  // the kernels never mask lanes
+    if (job.plan.lane_masks) {
+      bits &= kept_lanes(job, t, x, y, lanes);
+      if (!bits) return;
+    }
+  }
+  // Lanes outside the framebuffer (the tile's pixels end there) are not drawn.
+  if (kPath == Path::kEdge || (kPath == Path::kScalar && !interior)) {
+    const int valid = job.fb->width - x;
+    if (valid < lanes) {
+      unsigned row = (1u << valid) - 1u;
+      bits &= row | row << lanes;
+    }
+    for (int r = 1; r < kRows; ++r) {
+      if (y + r >= job.fb->height) bits &= (1u << (r * lanes)) - 1u;
+    }
+    if (!bits) return;
+  }
+  VB coverage;
+  if constexpr (kCoverage) {  // smooth lines and points (the scalar path applies it per fragment)
+    coverage = block_coverage(*t.coverage, x, y, bits);
+    if (!bits) return;
+  }
+  const VD inv_area = hn::Set(dd, t.inv_area);
+  VD b0[kRows], b1[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) b0[r] = hn::Mul(e[r][0], inv_area), b1[r] = hn::Mul(e[r][1], inv_area);
+  // The weights in floats, and depth from them as reference_raster.inl's plane_depth.
+  const DB db;
+  const VB f0 = join_rows(df, hn::DemoteTo(df, b0[0]), hn::DemoteTo(df, b0[kRows - 1]));
+  const VB f1 = join_rows(df, hn::DemoteTo(df, b1[0]), hn::DemoteTo(df, b1[kRows - 1]));
+  const VB plane = hn::Add(hn::Add(hn::Set(db, t.depth.base), hn::Mul(f0, hn::Set(db, t.depth.d0))),
+                           hn::Mul(f1, hn::Set(db, t.depth.d1)));
+  VB z = clamp_unit(hn::Add(plane, hn::Set(db, t.offset)));  // draw.cpp's emit
+  if constexpr (kPath == Path::kScalar) {
+    #pragma GCC unroll 4
+    for (int r = 0; r < kRows; ++r) {
+      if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
+    }
+  } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
+    kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
+  } else {
+    simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z,
+                      kCoverage ? &coverage : nullptr);
+  }
+}
+
+// kCoverage: a smooth line's or point's triangle on the SIMD path (draws with them take the
+// general path, never a kernel).
+template <Path kPath, BlockKernel kKernel = BlockKernel::kGeneral, bool kCoverage = false>
+void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior) {
+  const DD dd;
+  const int lanes = int(hn::Lanes(dd));
+  VD lane_step[3], group_step[3], thr[3];
+  #pragma GCC unroll 4
+  for (int e = 0; e < 3; ++e) {
+    double a = double(-t.dy[e] * detail::kSubpixelOne);  // edge change one pixel right
+    lane_step[e] = hn::Mul(hn::Iota(dd, 0.0), hn::Set(dd, a));
+    group_step[e] = hn::Set(dd, a * lanes);
+    thr[e] = hn::Set(dd, t.threshold[e]);
+  }
+  // Blocks start on even rows (tiles do): a row above the triangle's box or below it inside
+  // the tile has no covered pixel, and rows past the framebuffer's bottom are masked.
+  const int gx0 = t.x0 & ~(lanes - 1);
+  const int gy0 = t.y0 & ~(kRows - 1);
+  TrianglePlanes planes;
+  GroupCounts counts;
+  std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
+  #pragma GCC unroll 4
+  for (int k = 0; k < 3; ++k) {
+    row_start[k] = edge_at(t, k, gx0, gy0);
+    row_step[k] = t.dx[k] * detail::kSubpixelOne;
+  }
+  for (int y = gy0; y <= t.y1; y += kRows) {
+    VD e[kRows][3];
+    #pragma GCC unroll 4
+    for (int r = 0; r < kRows; ++r) {
+      #pragma GCC unroll 4
+      for (int k = 0; k < 3; ++k) {
+        e[r][k] = hn::Add(hn::Set(dd, double(row_start[k])), lane_step[k]);
+        row_start[k] += row_step[k];
+      }
+    }
+    for (int x = gx0; x <= t.x1; x += lanes) {
+      block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr);
+      #pragma GCC unroll 4
+      for (int r = 0; r < kRows; ++r) {
+        #pragma GCC unroll 4
+        for (int k = 0; k < 3; ++k) e[r][k] = hn::Add(e[r][k], group_step[k]);
+      }
+    }
+  }
+  ws.stats.fragments += counts.fragments;
+  ws.stats.pixels_shaded += counts.shaded;
+}
+
+}  // namespace
+}  // namespace shadelab::fast::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#endif  // per-target include guard
