@@ -56,11 +56,21 @@ class ListTables:
         self.compiled = [c for c in tables.implemented if tables.compiled_into_lists(c)]
         for c in self.compiled:
             check_compiled(c)
+            if not recordable(c) and c.short not in self.hand:
+                raise SystemExit(f"generate: {c.name} takes an array of pointers: it needs a hand-written saver")
+        self.recorded = [c for c in self.compiled if recordable(c)]
 
     def counted(self) -> list[Command]:
         """Generated savers that need a hand-written save_count::Foo."""
         return [c for c in self.compiled if c.short not in self.hand
                 and any(compsize_args(p) is not None for p in pointers(c))]
+
+
+def recordable(c: Command) -> bool:
+    """Whether the command's arguments can be copied into a list: not an array of pointers
+    (glMultiDrawElements' indices), which only a hand-written saver can dereference (it
+    records other opcodes; the command gets no record:: function and no replay)."""
+    return all(p.ctype.count("*") < 2 for p in c.params)
 
 
 def record_params(c: Command) -> str:
@@ -71,7 +81,7 @@ def record_params(c: Command) -> str:
 def save_hpp(lt: ListTables) -> str:
     ops = [c.short for c in lt.compiled] + lt.internal
     saves = "\n".join(f"void {c.short}({c.param_list('ctx')});" for c in lt.compiled)
-    records = "\n".join(f"void {c.short}({record_params(c)});" for c in lt.compiled)
+    records = "\n".join(f"void {c.short}({record_params(c)});" for c in lt.recorded)
     counts = []
     for c in lt.counted():
         for p in pointers(c):
@@ -187,9 +197,11 @@ def decode_case(c: Command) -> str | None:
 
 
 def dlist_commands_cpp(lt: ListTables) -> str:
-    records = "\n\n".join(record_function(c) for c in lt.compiled)
+    records = "\n\n".join(record_function(c) for c in lt.recorded)
     saves = "\n\n".join(save_function(c) for c in lt.compiled if c.short not in lt.hand)
-    cases = "\n".join(replay_case(lt, c) for c in lt.compiled)
+    cases = "\n".join(replay_case(lt, c) for c in lt.recorded)
+    cases += "".join(f"\n    case Opcode::k{c.short}: return;  // never recorded (its saver records others)"
+                     for c in lt.compiled if not recordable(c))
     internal = "\n".join(f"    case Opcode::k{n}: return replay_internal::{n}(ctx, reader);" for n in lt.internal)
     decodes = "\n".join(d for d in (decode_case(c) for c in lt.compiled) if d)
     return f"""// The recording and replay of every compiled command (GL 1.1 section 5.4): arguments copied
