@@ -132,6 +132,14 @@ struct ListCalls {
   }
 };
 
+// Whether a buffer object is bound to GL_ARRAY_BUFFER: array pointers are offsets then, else
+// they must point into our arrays.
+bool array_buffer_bound() {
+  GLint name = 0;
+  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &name);  // unchanged between glBegin and glEnd
+  return name != 0;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -183,7 +191,23 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 13: glMatrixMode(in.any_enum()); break;
       case 14: glPushMatrix(); break;
       case 15: glPopMatrix(); break;
-      case 16: glLoadIdentity(); break;
+      case 16:  // the identity, or a matrix row by row (GL 1.3)
+        for (float& v : f) v = in.number();
+        switch (in.byte() % 4) {
+          case 0: glLoadIdentity(); break;
+          case 1: {
+            const GLfloat m[16] = {f[0], f[1], 0, f[2], f[3], 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+            glLoadTransposeMatrixf(m);
+            break;
+          }
+          case 2: {
+            const GLdouble m[16] = {f[0], 0, 0, 0, f[1], f[2], 0, 0, 0, 0, f[3], 0, 0, 0, 0, 1};
+            glMultTransposeMatrixd(m);
+            break;
+          }
+          default: glMultTransposeMatrixf(reinterpret_cast<const GLfloat*>(b->out)); break;
+        }
+        break;
       case 17: glRotatef(in.number(), in.number(), in.number(), in.number()); break;
       case 18: glTranslatef(in.number(), in.number(), in.number()); break;
       case 19: glScalef(in.number(), in.number(), in.number()); break;
@@ -196,20 +220,103 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 26: glStencilFunc(in.any_enum(), in.small(-2, 300), GLuint(in.byte())); break;
       case 27: glStencilOp(in.any_enum(), in.any_enum(), in.any_enum()); break;
       case 28: glShadeModel(in.any_enum()); break;
-      case 29: glPolygonOffset(in.number(), in.number()); break;
+      case 29:  // polygon offset, sample coverage (GL 1.3: no multisample buffer), compressed images
+        switch (in.byte() % 4) {
+          case 0: glSampleCoverage(in.number(), GLboolean(in.byte() % 3)); break;
+          case 1:
+            glCompressedTexImage2D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-1, kMaxImage),
+                                   in.small(-1, kMaxImage), in.small(0, 1), in.small(-1, 64), b->pixels);
+            glCompressedTexSubImage1D(in.any_enum(), in.small(-1, 4), 0, in.small(-1, kMaxImage), in.any_enum(),
+                                      in.small(-1, 64), b->pixels);
+            break;
+          case 2: glGetCompressedTexImage(in.any_enum(), in.small(-1, 4), b->pixels); break;
+          default: glPolygonOffset(in.number(), in.number()); break;
+        }
+        break;
       case 30: {  // arrays: pointers into our buffers, strides that stay inside them
         int which = in.byte() % 4, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
         GLenum type = in.any_enum();
         void* p = b->arrays[which];
+        // Or an offset into a buffer object (GL 1.5), of any size, bound or not.
+        if (in.byte() % 4 == 0) glBindBuffer(GL_ARRAY_BUFFER, GLuint(in.small(0, 3)));
+        if (array_buffer_bound()) p = reinterpret_cast<void*>(std::uintptr_t(in.small(0, 64) * 4));
         if (which == 0) glVertexPointer(sz, type, stride, p);
         else if (which == 1) glNormalPointer(type, stride, p);
         else if (which == 2) glColorPointer(sz, type, stride, p);
         else glTexCoordPointer(sz, type, stride, p);
         break;
       }
-      case 31: glEnableClientState(in.any_enum()); break;
+      case 31:
+        if (in.byte() % 2) {
+          glEnableClientState(in.any_enum());
+          break;
+        }
+        switch (in.byte() % 8) {  // buffer objects (GL 1.5): names 0 to 3, either target
+          case 0: {
+            GLuint names[2];
+            glGenBuffers(in.small(-1, 2), names);
+            break;
+          }
+          case 1: {
+            const GLuint names[2] = {GLuint(in.small(0, 3)), GLuint(in.small(0, 3))};
+            glDeleteBuffers(in.small(-1, 2), names);
+            (void)glIsBuffer(names[0]);
+            break;
+          }
+          case 2: glBindBuffer(in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER + in.small(0, 1), GLuint(in.small(0, 3))); break;
+          case 3:
+            glBufferData(in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER, in.small(-1, 64) * 64,
+                         in.byte() % 4 ? b->arrays[0] : nullptr, GL_STATIC_DRAW + in.small(-1, 10));
+            break;
+          case 4:
+            glBufferSubData(in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER, in.small(-1, 64) * 16,
+                            in.small(-1, 64) * 16, b->arrays[1]);
+            glGetBufferSubData(in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER, in.small(-1, 64) * 16,
+                               in.small(-1, 64) * 16, b->arrays[2]);
+            break;
+          case 5: {
+            const GLenum target = in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER;
+            GLint size = 0;
+            glGetBufferParameteriv(target, GL_BUFFER_SIZE, &size);
+            auto* mapped = static_cast<unsigned char*>(glMapBuffer(target, GL_READ_ONLY + in.small(-1, 3)));
+            if (mapped && size > 0) mapped[in.byte() % size] = in.byte();
+            break;
+          }
+          case 6: (void)glUnmapBuffer(in.byte() % 2 ? GL_ARRAY_BUFFER : GL_ELEMENT_ARRAY_BUFFER); break;
+          default: {
+            GLint v;
+            void* pointer;
+            glGetBufferParameteriv(in.byte() % 2 ? GL_ARRAY_BUFFER : in.any_enum(), GL_BUFFER_SIZE + in.small(-1, 3), &v);
+            glGetBufferPointerv(GL_ARRAY_BUFFER, in.byte() % 2 ? GL_BUFFER_MAP_POINTER : in.any_enum(), &pointer);
+            const std::uintptr_t offset = std::uintptr_t(in.small(0, 16) * 4);
+            glInterleavedArrays(GL_V2F + in.small(-1, 14), in.small(0, 4) * 4,
+                                array_buffer_bound() ? reinterpret_cast<void*>(offset) : b->arrays[0] + offset);
+            break;
+          }
+        }
+        break;
       case 32: glDrawArrays(in.any_enum(), in.small(0, kElements / 2), in.small(-1, kElements / 2)); break;
-      case 33: glDrawElements(in.any_enum(), in.small(-1, 256), GL_UNSIGNED_INT, b->indices); break;
+      case 33: {  // indexed and multiple draws (GL 1.2, 1.4), indices in client memory or a buffer
+        const GLenum mode = in.any_enum();
+        const GLenum type = in.byte() % 4 ? GL_UNSIGNED_INT : GL_UNSIGNED_BYTE + in.small(-1, 6);
+        const bool buffer = in.byte() % 4 == 0;
+        if (buffer) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, GLuint(in.small(0, 3)));
+        else glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+        const void* indices = buffer ? reinterpret_cast<void*>(std::uintptr_t(in.small(0, 16) * 4)) : b->indices;
+        const GLint first[3] = {in.small(-1, kElements / 2), in.small(0, kElements / 2), 0};
+        // (glMultiDrawArrays reads up to element first + count: at most kElements.)
+        const GLsizei count[3] = {in.small(-1, kElements / 2), in.small(0, kElements / 2), in.small(0, 3)};
+        const void* lists[3] = {indices, in.byte() % 4 ? b->indices : nullptr, b->indices + 64};
+        switch (in.byte() % 4) {
+          case 0: glDrawElements(mode, in.small(-1, 256), type, indices); break;
+          case 1:
+            glDrawRangeElements(mode, GLuint(in.small(0, 70)), GLuint(in.small(0, 70)), in.small(-1, 128), type, indices);
+            break;
+          case 2: glMultiDrawArrays(mode, first, count, in.small(-1, 3)); break;
+          default: glMultiDrawElements(mode, count, type, lists, in.small(-1, 3)); break;
+        }
+        break;
+      }
       case 34: {  // textures with small images from our pixel buffer
         GLuint name = 0;
         glGenTextures(1, &name);
@@ -337,7 +444,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)OSMesaGetDepthBuffer(ctx, &w, &h, &bytes, &depth);
         break;
       }
-      case 51: glRasterPos4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 51:  // the raster position, through the transforms or in window coordinates (GL 1.4)
+        if (in.byte() % 2) glRasterPos4f(in.number(), in.number(), in.number(), in.number());
+        else if (in.byte() % 2) glWindowPos3f(in.number(), in.number(), in.number());
+        else glWindowPos2i(in.small(-40, 40), in.small(-40, 40));
+        break;
       case 52:  // bitmaps of every size and unpack state, read from our pixel buffer
         glPixelStorei(in.any_enum(), in.small(0, kMaxImage));
         glBitmap(in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.number(), in.number(), in.number(),

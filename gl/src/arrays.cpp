@@ -1,8 +1,11 @@
-// Vertex arrays (GL 1.1 section 2.8): the four array pointers, glArrayElement, glDrawArrays and
-// glDrawElements. Each element becomes current attributes plus a vertex, exactly as the
+// Vertex arrays (GL 1.1 section 2.8): the array pointers, glArrayElement, glDrawArrays,
+// glDrawElements, GL 1.2's glDrawRangeElements, GL 1.4's glMultiDrawArrays and
+// glMultiDrawElements, and GL 1.5's arrays and indices in buffer objects (section 2.9, read in
+// place). Each element becomes current attributes plus a vertex, exactly as the
 // equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest,
 // or array_mesh.cpp draws the whole array in one go where that gives the same result.
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -75,6 +78,52 @@ float component(const ClientArray& a, std::size_t i, int k, Norm norm) {
 
 bool usable(const ClientArray& a) { return a.enabled && a.pointer; }
 
+// GL 1.5 section 2.9: while a draw reads the arrays, those given as offsets into buffer
+// objects point into the buffers' data stores (read in place, never copied); the arrays are
+// as they were afterwards. A mapped buffer is read all the same (GL 1.5 leaves such draws
+// undefined; Mesa 22.3 draws them without an error; the mapping is the store itself). `limit`: the number of elements every
+// enabled array in a buffer holds (SIZE_MAX with none).
+class ResolvedArrays {
+ public:
+  explicit ResolvedArrays(GlContext& c) : c_(c) {
+    ClientArrays& a = c.arrays;
+    bool any = false;
+    for (ClientArray* array : each(a)) {
+      if (!array->enabled || !array->buffer) continue;
+      any = true;
+    }
+    if (!any) return;
+    saved_ = a;
+    swapped_ = true;
+    for (ClientArray* array : each(a)) {
+      if (!array->enabled || !array->buffer) continue;
+      const std::vector<unsigned char>& data = array->buffer->data;
+      const std::size_t offset = reinterpret_cast<std::uintptr_t>(array->pointer);
+      const std::size_t size = std::size_t(type_size(array->type)) * std::size_t(array->size);
+      const std::size_t stride = array->stride ? std::size_t(array->stride) : size;
+      const std::size_t elements =
+          offset > data.size() || data.size() - offset < size ? 0 : (data.size() - offset - size) / std::max<std::size_t>(stride, 1) + 1;
+      limit_ = std::min(limit_, elements);
+      array->pointer = elements ? data.data() + offset : nullptr;
+    }
+  }
+  ~ResolvedArrays() {
+    if (swapped_) c_.arrays = std::move(saved_);
+  }
+  ResolvedArrays(const ResolvedArrays&) = delete;
+  ResolvedArrays& operator=(const ResolvedArrays&) = delete;
+  std::size_t limit() const { return limit_; }
+
+ private:
+  static std::array<ClientArray*, 6> each(ClientArrays& a) {
+    return {&a.vertex, &a.normal, &a.color, &a.texcoord, &a.index, &a.edge_flag};
+  }
+  GlContext& c_;
+  ClientArrays saved_;
+  bool swapped_ = false;
+  std::size_t limit_ = SIZE_MAX;
+};
+
 // A GL_FLOAT array as floats: element i's first component, and the step between elements
 // in floats (a stride that is not a whole number of floats takes the general path).
 std::size_t float_stride(const ClientArray& a) {
@@ -118,7 +167,7 @@ void array_element(GlContext& c, std::size_t i, Norm norm) {
 // afterwards: GL leaves them indeterminate, and Mesa leaves them unchanged.
 template <class IndexOf>
 void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_of, bool from_elements,
-                   const std::uint32_t* direct = nullptr) {
+                   const std::uint32_t* direct = nullptr, std::size_t limit = SIZE_MAX) {
   if (!usable(c.arrays.vertex)) return;
   const ClientArrays& a = c.arrays;
   const CurrentAttribs& now = c.current;
@@ -172,6 +221,9 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   make_pipeline(c);
   if (c.pipeline && count >= (1u << 16)) c.pipeline->parallel_for(count, 1u << 15, gather);
   else gather(0, count);
+  // An element past the end of a buffer the arrays read: nothing is drawn (nothing is read
+  // outside a buffer).
+  if (count > 0 && hi >= limit) return;
   if (draw_array_mesh(c, mode, usable(a.color), from_elements, count, read_direct ? direct : nullptr, lo, hi, load)) return;
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
@@ -190,13 +242,63 @@ bool valid_type(GLenum type, std::initializer_list<GLenum> allowed) {
   return false;
 }
 
+bool index_type(GLenum type) {
+  return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT || type == GL_UNSIGNED_INT;
+}
+
+// Index k of an index array of `type` (one of index_type's).
+std::size_t read_index(const unsigned char* bytes, GLenum type, std::size_t k) {
+  if (type == GL_UNSIGNED_BYTE) return bytes[k];
+  if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
+  return load<GLuint>(bytes + 4 * k);
+}
+
+// The index data of an indexed draw: `indices` itself, or the offset it is into the buffer
+// bound to GL_ELEMENT_ARRAY_BUFFER (null when `count` indices of `type` run past its end:
+// nothing is read outside it). `error`: GL_INVALID_VALUE for null client indices.
+const unsigned char* index_data(const GlContext& c, GLsizei count, GLenum type, const void* indices, bool& error) {
+  error = false;
+  if (const BufferObject* b = c.arrays.element_buffer.get()) {
+    const std::size_t offset = reinterpret_cast<std::uintptr_t>(indices);
+    const std::size_t bytes = std::size_t(count) * (type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : 4);
+    if (offset > b->data.size() || b->data.size() - offset < bytes || b->data.empty()) return nullptr;
+    return b->data.data() + offset;
+  }
+  error = !indices && count != 0;
+  return static_cast<const unsigned char*>(indices);
+}
+
+// glDrawElements' drawing once its arguments are checked: `count` indices of `type` at
+// `indices` (client memory, or an offset into the element array buffer).
+void draw_indexed(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  ResolvedArrays arrays(c);
+  bool error = false;
+  const unsigned char* bytes = index_data(c, count, type, indices, error);
+  if (error) return c.set_error(GL_INVALID_VALUE);
+  if (!bytes) return;
+  // Aligned 32-bit indices can be read in place (as triangles, draw_array_mesh).
+  const bool aligned = type == GL_UNSIGNED_INT && reinterpret_cast<std::uintptr_t>(bytes) % alignof(shadelab::Triangle) == 0;
+  draw_elements(
+      c, mode, std::size_t(count), [&](std::size_t k) { return read_index(bytes, type, k); }, true,
+      aligned ? reinterpret_cast<const std::uint32_t*>(bytes) : nullptr, arrays.limit());
+}
+
+// glDrawArrays' drawing once its arguments are checked.
+void draw_range(GlContext& c, GLenum mode, GLint first, GLsizei count) {
+  ResolvedArrays arrays(c);
+  draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; }, false, nullptr,
+                arrays.limit());
+}
+
 // The gl*Pointer rule, checked in Mesa's order: the stride, then the type, then the size.
 void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei stride, const void* ptr,
                  int min_size, int max_size, std::initializer_list<GLenum> types) {
   if (stride < 0) return c.set_error(GL_INVALID_VALUE);
   if (!valid_type(type, types)) return c.set_error(GL_INVALID_ENUM);
   if (size < min_size || size > max_size) return c.set_error(GL_INVALID_VALUE);
-  a = {a.enabled, size, type, stride, ptr};
+  // GL 1.5 section 2.9: the array takes the buffer bound to GL_ARRAY_BUFFER now; the pointer
+  // is then an offset into it.
+  a = {a.enabled, size, type, stride, ptr, c.arrays.array_buffer, c.arrays.array_buffer_name};
 }
 
 // Array elements dereferenced for a display list: per element, the attributes
@@ -229,7 +331,13 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
 void record_draw(GlContext& c, GLenum mode, std::size_t count, const auto& index_of) {
   // Without the vertex array the draw specifies nothing, but it is still recorded (with no
   // elements): run inside glBegin/glEnd it is GL_INVALID_OPERATION, as Mesa's.
+  // Arrays in buffers are dereferenced now too (GL 1.5 section 5.4); an element past a
+  // buffer's end leaves the draw empty.
+  ResolvedArrays arrays(c);
   if (!usable(c.arrays.vertex)) count = 0;
+  for (std::size_t k = 0; arrays.limit() != SIZE_MAX && k < count; ++k) {
+    if (index_of(k) >= arrays.limit()) count = 0;
+  }
   ListWriter w(c, Opcode::kArrayDraw);
   w.scalar(mode);
   write_elements(c, w, count, Norm::kDraw, index_of);
@@ -281,6 +389,8 @@ void replay_internal::ArrayDraw(GlContext& c, ListReader& r) {
 // section 5.4). Argument errors are recorded (as Mesa's compile errors) and nothing else.
 void save::ArrayElement(GlContext& c, GLint i) {
   if (i < 0) return;  // no error, as Mesa (which reads before the arrays); nothing recorded
+  ResolvedArrays arrays(c);
+  if (std::size_t(i) >= arrays.limit()) return;
   ListWriter w(c, Opcode::kArrayElements);
   write_elements(c, w, 1, Norm::kSpec, [&](std::size_t) { return std::size_t(i); });
 }
@@ -291,19 +401,63 @@ void save::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
   record_draw(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; });
 }
 
+namespace {
+
+// A glDrawElements-like saver's checks, in Mesa's order (its compile errors); false when
+// the draw is not recorded. `type_error`: Mesa's compile error for a wrong type, which is
+// GL_INVALID_VALUE in the savers of GL 1.2-1.4's draws (they share one path in Mesa 22.3).
+bool save_elements_checks(GlContext& c, GLenum mode, GLsizei count, GLenum type, GLenum type_error = GL_INVALID_ENUM) {
+  if (mode > GL_POLYGON) return record_error(c, GL_INVALID_ENUM), false;
+  if (count < 0) return record_error(c, GL_INVALID_VALUE), false;
+  if (!index_type(type)) return record_error(c, type_error), false;
+  return true;
+}
+
+void save_elements(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  bool error = false;
+  const unsigned char* bytes = index_data(c, count, type, indices, error);
+  if (error) return record_error(c, GL_INVALID_VALUE);
+  if (!bytes) return;
+  record_draw(c, mode, std::size_t(count), [&](std::size_t k) { return read_index(bytes, type, k); });
+}
+
+}  // namespace
+
 void save::DrawElements(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
+  if (save_elements_checks(c, mode, count, type)) save_elements(c, mode, count, type, indices);
+}
+
+// GL 1.2: as glDrawElements, the range checked first (Mesa's compile error).
+void save::DrawRangeElements(GlContext& c, GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                             const void* indices) {
+  if (end < start) return record_error(c, GL_INVALID_VALUE);
+  if (save_elements_checks(c, mode, count, type, GL_INVALID_VALUE)) save_elements(c, mode, count, type, indices);
+}
+
+// GL 1.4: each primitive recorded as the glDrawArrays / glDrawElements it stands for, with
+// Mesa's compile errors (glMultiDrawArrays: the mode, the primitive count, every count, then
+// each primitive's; glMultiDrawElements: those of each primitive of a positive count, in turn).
+void save::MultiDrawArrays(GlContext& c, GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
   if (mode > GL_POLYGON) return record_error(c, GL_INVALID_ENUM);
-  if (count < 0) return record_error(c, GL_INVALID_VALUE);
-  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
-    return record_error(c, GL_INVALID_ENUM);
+  if (drawcount < 0) return record_error(c, GL_INVALID_VALUE);
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] < 0) return record_error(c, GL_INVALID_VALUE);
   }
-  if (!indices) return count == 0 ? void() : record_error(c, GL_INVALID_VALUE);
-  const auto* bytes = static_cast<const unsigned char*>(indices);
-  record_draw(c, mode, std::size_t(count), [&](std::size_t k) -> std::size_t {
-    if (type == GL_UNSIGNED_BYTE) return bytes[k];
-    if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
-    return load<GLuint>(bytes + 4 * k);
-  });
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] > 0) save::DrawArrays(c, mode, first[i], count[i]);
+  }
+}
+
+void save::MultiDrawElements(GlContext& c, GLenum mode, const GLsizei* count, GLenum type,
+                             const void* const* indices, GLsizei drawcount) {
+  if (!c.arrays.element_buffer && std::find(indices, indices + std::max(drawcount, 0), nullptr) != indices + std::max(drawcount, 0)) {
+    return;
+  }
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] <= 0) continue;
+    if (!save_elements_checks(c, mode, count[i], type, GL_INVALID_VALUE)) return;
+    save_elements(c, mode, count[i], type, indices[i]);
+  }
 }
 
 void exec::VertexPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
@@ -336,34 +490,63 @@ void exec::EdgeFlagPointer(GlContext& c, GLsizei stride, const void* ptr) {
 // negative index is no error in Mesa (which reads before the arrays): here it does nothing.
 void exec::ArrayElement(GlContext& c, GLint i) {
   if (i < 0) return;
+  ResolvedArrays arrays(c);  // arrays in buffers are read in place
+  if (std::size_t(i) >= arrays.limit()) return;
   array_element(c, std::size_t(i), Norm::kSpec);
 }
 
 void exec::DrawArrays(GlContext& c, GLenum mode, GLint first, GLsizei count) {
   if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
   if (first < 0 || count < 0) return c.set_error(GL_INVALID_VALUE);
-  draw_elements(c, mode, std::size_t(count), [&](std::size_t k) { return std::size_t(first) + k; }, false);
+  draw_range(c, mode, first, count);
 }
 
 // Indices are used as given: like GL, shadelab cannot know how long the caller's arrays are.
 void exec::DrawElements(GlContext& c, GLenum mode, GLsizei count, GLenum type, const void* indices) {
   if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
   if (count < 0) return c.set_error(GL_INVALID_VALUE);
-  if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT) {
-    return c.set_error(GL_INVALID_ENUM);
+  if (!index_type(type)) return c.set_error(GL_INVALID_ENUM);
+  draw_indexed(c, mode, count, type, indices);
+}
+
+// GL 1.2 section 2.8: glDrawElements with the promise that every index is in [start, end].
+// Checked as Mesa checks it (the range, then the count, the mode and the type); indices outside
+// the range are drawn all the same, as Mesa draws them.
+void exec::DrawRangeElements(GlContext& c, GLenum mode, GLuint start, GLuint end, GLsizei count, GLenum type,
+                             const void* indices) {
+  if (end < start || count < 0) return c.set_error(GL_INVALID_VALUE);
+  if (mode > GL_POLYGON || !index_type(type)) return c.set_error(GL_INVALID_ENUM);
+  draw_indexed(c, mode, count, type, indices);
+}
+
+// GL 1.4 section 2.8: glDrawArrays for each of `drawcount` primitives. Mesa checks the
+// primitive count, the mode, then every count before drawing anything.
+void exec::MultiDrawArrays(GlContext& c, GLenum mode, const GLint* first, const GLsizei* count, GLsizei drawcount) {
+  if (drawcount < 0) return c.set_error(GL_INVALID_VALUE);
+  if (mode > GL_POLYGON) return c.set_error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] < 0) return c.set_error(GL_INVALID_VALUE);
   }
-  if (!indices) return count == 0 ? void() : c.set_error(GL_INVALID_VALUE);
-  const auto* bytes = static_cast<const unsigned char*>(indices);
-  // Aligned 32-bit indices can be read in place (as triangles, draw_array_mesh).
-  const bool aligned = type == GL_UNSIGNED_INT && reinterpret_cast<std::uintptr_t>(indices) % alignof(shadelab::Triangle) == 0;
-  draw_elements(
-      c, mode, std::size_t(count),
-      [&](std::size_t k) -> std::size_t {
-        if (type == GL_UNSIGNED_BYTE) return bytes[k];
-        if (type == GL_UNSIGNED_SHORT) return load<GLushort>(bytes + 2 * k);
-        return load<GLuint>(bytes + 4 * k);
-      },
-      true, aligned ? static_cast<const std::uint32_t*>(indices) : nullptr);
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    // A negative first is no error in Mesa (which reads before the arrays): nothing drawn.
+    if (count[i] > 0 && first[i] >= 0) draw_range(c, mode, first[i], count[i]);
+  }
+}
+
+// GL 1.4: glDrawElements for each primitive; checked as Mesa checks it (the primitive count,
+// the mode, the type, every count). Without an element array buffer, a null index pointer
+// among them makes the whole call draw nothing, with no error (Mesa's rule).
+void exec::MultiDrawElements(GlContext& c, GLenum mode, const GLsizei* count, GLenum type,
+                             const void* const* indices, GLsizei drawcount) {
+  if (drawcount < 0) return c.set_error(GL_INVALID_VALUE);
+  if (mode > GL_POLYGON || !index_type(type)) return c.set_error(GL_INVALID_ENUM);
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] < 0) return c.set_error(GL_INVALID_VALUE);
+  }
+  if (!c.arrays.element_buffer && std::find(indices, indices + drawcount, nullptr) != indices + drawcount) return;
+  for (GLsizei i = 0; i < drawcount; ++i) {
+    if (count[i] > 0) draw_indexed(c, mode, count[i], type, indices[i]);
+  }
 }
 
 }  // namespace shadelab::gl

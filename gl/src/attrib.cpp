@@ -28,6 +28,8 @@ constexpr GLenum kCapabilities[] = {
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
     GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    // GL 1.3
+    GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
 };
 
 // The parameters of a texture object that the texture group holds (table 6.15), nine floats.
@@ -297,10 +299,11 @@ void exec::PushAttrib(GlContext& c, GLbitfield mask) {
   r.read_buffer = c.buffers.read_buffer;
   r.accum_clear = c.buffers.accum_clear;
   r.eval = c.eval.attribs;
+  r.multisample = c.multisample;
   c.attrib_stack.push_back(std::move(r));
 }
 
-// In the order of Mesa's glPopAttrib (groups GL 1.1 does not have yet: none).
+// In the order of Mesa's glPopAttrib.
 void exec::PopAttrib(GlContext& c) {
   if (c.attrib_stack.empty()) return c.set_error(GL_STACK_UNDERFLOW);
   const AttribRecord r = std::move(c.attrib_stack.back());
@@ -329,6 +332,8 @@ void exec::PopAttrib(GlContext& c) {
   if (m & GL_TRANSFORM_BIT) restore_transform(c, r);
   if (m & GL_TEXTURE_BIT) restore_textures(c, r);
   if (m & GL_VIEWPORT_BIT) restore_viewport(c, r);
+  // GL 1.3's multisample group (table 6.16 of GL 1.5): the enables and the coverage values.
+  if (m & GL_MULTISAMPLE_BIT) c.multisample = r.multisample;
 }
 
 void exec::PushClientAttrib(GlContext& c, GLbitfield mask) {

@@ -25,6 +25,7 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   }
   textures.names = share ? share->textures.names : std::make_shared<TextureNames>();
   lists.names = share ? share->lists.names : std::make_shared<ListNames>();
+  buffer_names = share ? share->buffer_names : std::make_shared<BufferNames>();
   // glTexGen's initial planes: s = x, t = y, r = q = 0 (GL 1.1 section 2.10.4).
   textures.gen[0].object_plane = textures.gen[0].eye_plane = glm::vec4(1, 0, 0, 0);
   textures.gen[1].object_plane = textures.gen[1].eye_plane = glm::vec4(0, 1, 0, 0);

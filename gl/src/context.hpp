@@ -24,6 +24,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "gl/src/buffer_state.hpp"
 #include "gl/src/dlist_state.hpp"
 #include "gl/src/eval_state.hpp"
 #include "gl/src/feedback_state.hpp"
@@ -162,6 +163,16 @@ struct PrimState {
   bool unfilled() const { return front_mode != GL_FILL || back_mode != GL_FILL; }
 };
 
+/// Multisampling (GL 1.3; GL 1.5 section 3.2.1): the enables and glSampleCoverage's values,
+/// kept and reported. shadelab's visuals have no multisample buffer (GL_SAMPLE_BUFFERS 0), so
+/// none of it changes a pixel.
+struct MultisampleState {
+  bool enabled = true;  // GL_MULTISAMPLE
+  bool alpha_to_coverage = false, alpha_to_one = false, coverage = false;
+  float coverage_value = 1.0f;  // clamped to [0, 1]
+  bool coverage_invert = false;
+};
+
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
@@ -173,13 +184,25 @@ struct ClientArray {
   GLint size = 4;
   GLenum type = GL_FLOAT;
   GLsizei stride = 0;
-  const void* pointer = nullptr;
+  const void* pointer = nullptr;  // an offset into `buffer` when there is one
+  // GL 1.5 section 2.9: the buffer bound to GL_ARRAY_BUFFER when the pointer was given
+  // (GL_*_ARRAY_BUFFER_BINDING), null for client memory.
+  std::shared_ptr<BufferObject> buffer;
+  GLuint buffer_name = 0;
 };
 
 struct ClientArrays {
-  ClientArray vertex, normal{false, 3}, color, texcoord;
-  ClientArray index{false, 1};                        // colour indices: current index only
-  ClientArray edge_flag{false, 1, GL_UNSIGNED_BYTE};  // GLboolean elements
+  static ClientArray initial(GLint size, GLenum type = GL_FLOAT) {
+    ClientArray a;
+    a.size = size, a.type = type;
+    return a;
+  }
+  ClientArray vertex, normal = initial(3), color, texcoord;
+  ClientArray index = initial(1);                        // colour indices: current index only
+  ClientArray edge_flag = initial(1, GL_UNSIGNED_BYTE);  // GLboolean elements
+  // GL 1.5: GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER (vertex-array client state).
+  std::shared_ptr<BufferObject> array_buffer, element_buffer;
+  GLuint array_buffer_name = 0, element_buffer_name = 0;
 };
 
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
@@ -235,7 +258,7 @@ struct AttribRecord {
     std::array<float, 9> bound{}, defaults{};
   };
   std::vector<TextureTarget> texture_targets;
-  std::array<GLenum, 5> hints{};
+  std::array<GLenum, 6> hints{};
   GLenum matrix_mode = GL_MODELVIEW;
   GLuint list_base = 0;
   RasterPosition raster_pos;  // current group (table 6.5)
@@ -243,6 +266,7 @@ struct AttribRecord {
   GLenum draw_buffer = GL_FRONT, read_buffer = GL_FRONT;  // colour-buffer and pixel groups
   glm::vec4 accum_clear{0.0f};                             // accum-buffer group
   EvalAttribs eval;
+  MultisampleState multisample;  // multisample group (GL 1.3)
 };
 
 /// One glPushClientAttrib entry (GL 1.1 section 6.1.14).
@@ -281,12 +305,14 @@ struct GlContext {
   RasterState raster;
   PrimState prims;
   FogSettings fog;
+  MultisampleState multisample;  // glSampleCoverage and the multisample enables
   TextureState textures;
   PixelStore pack, unpack;
   PixelTransfer pixel;         // glPixelTransfer, glPixelMap, glPixelZoom
   RasterPosition raster_pos;   // glRasterPos
   BufferState buffers;         // glDrawBuffer, glReadBuffer, the accumulation buffer
   ClientArrays arrays;
+  std::shared_ptr<BufferNames> buffer_names;  // GL 1.5 buffer objects (bufferobj.cpp)
   ListState lists;
   EvalState eval;
   GLenum render_mode = GL_RENDER;  // glRenderMode (feedback.cpp)
@@ -298,7 +324,9 @@ struct GlContext {
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;
-  std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+  // glHint's targets in hint_slot's order (state.cpp); the last is GL 1.3's
+  // GL_TEXTURE_COMPRESSION_HINT (accepted, no compression either way).
+  std::array<GLenum, 6> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
                               GL_DONT_CARE};
 
   GLenum matrix_mode = GL_MODELVIEW;

@@ -4,6 +4,7 @@
 #include <climits>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/version.hpp"
@@ -51,6 +52,11 @@ Values vec(Kind k, const float* p, int n) {
   return r;
 }
 
+Values transposed(const glm::mat4& m) {
+  const glm::mat4 t = glm::transpose(m);
+  return vec(Kind::kFloat, glm::value_ptr(t), 16);
+}
+
 Values ints(std::initializer_list<double> xs) { return make(Kind::kInt, xs); }
 
 Values array_state(const ClientArray& a, bool with_size) {
@@ -75,6 +81,15 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_ARRAY_TYPE: out = ints({double(a.index.type)}); return true;
     case GL_INDEX_ARRAY_STRIDE: out = ints({double(a.index.stride)}); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(a.edge_flag.stride)}); return true;
+    // GL 1.5: the buffer bindings (section 2.9).
+    case GL_ARRAY_BUFFER_BINDING: out = ints({double(a.array_buffer_name)}); return true;
+    case GL_ELEMENT_ARRAY_BUFFER_BINDING: out = ints({double(a.element_buffer_name)}); return true;
+    case GL_VERTEX_ARRAY_BUFFER_BINDING: out = ints({double(a.vertex.buffer_name)}); return true;
+    case GL_NORMAL_ARRAY_BUFFER_BINDING: out = ints({double(a.normal.buffer_name)}); return true;
+    case GL_COLOR_ARRAY_BUFFER_BINDING: out = ints({double(a.color.buffer_name)}); return true;
+    case GL_INDEX_ARRAY_BUFFER_BINDING: out = ints({double(a.index.buffer_name)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.texcoord.buffer_name)}); return true;
+    case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: out = ints({double(a.edge_flag.buffer_name)}); return true;
     default: break;
   }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
@@ -101,6 +116,10 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
     case GL_TEXTURE_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.texture_matrix.top()), 16); return true;
+    // GL 1.3: the same matrices row by row.
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: out = transposed(c.modelview.top()); return true;
+    case GL_TRANSPOSE_PROJECTION_MATRIX: out = transposed(c.projection.top()); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX: out = transposed(c.texture_matrix.top()); return true;
     case GL_MODELVIEW_STACK_DEPTH: out = ints({double(c.modelview.entries.size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: out = ints({double(c.projection.entries.size())}); return true;
     case GL_TEXTURE_STACK_DEPTH: out = ints({double(c.texture_matrix.entries.size())}); return true;
@@ -168,6 +187,10 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_MODE: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
     case GL_DOUBLEBUFFER: out = make(Kind::kBool, {double(c.double_buffered)}); return true;
     case GL_RENDER_MODE: out = ints({double(c.render_mode)}); return true;
+    // Multisampling (GL 1.3): no multisample buffer.
+    case GL_SAMPLE_COVERAGE_VALUE: out = make(Kind::kFloat, {c.multisample.coverage_value}); return true;
+    case GL_SAMPLE_COVERAGE_INVERT: out = make(Kind::kBool, {double(c.multisample.coverage_invert)}); return true;
+    case GL_SAMPLE_BUFFERS: case GL_SAMPLES: out = ints({0}); return true;
     // Selection and feedback (GL 1.1 table 6.31).
     case GL_FEEDBACK_BUFFER_SIZE: out = ints({double(c.feedback.size)}); return true;
     case GL_FEEDBACK_BUFFER_TYPE: out = ints({double(c.feedback.type)}); return true;
@@ -232,6 +255,9 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({kMaxAttribStackDepth}); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({kMaxClientAttribStackDepth}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    // GL 1.3: no specific compressed texture format (texcompress.cpp).
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out = ints({0}); return true;
+    case GL_COMPRESSED_TEXTURE_FORMATS: out = ints({}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_SUBPIXEL_BITS: out = ints({8}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = ints({double(c.hints[0])}); return true;
@@ -239,6 +265,7 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
+    case GL_TEXTURE_COMPRESSION_HINT: out = ints({double(c.hints[5])}); return true;
     case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({kMaxEvalOrder}); return true;
     case GL_MAP1_GRID_DOMAIN: out = make(Kind::kFloat, {c.eval.attribs.grid1_u1, c.eval.attribs.grid1_u2}); return true;

@@ -56,15 +56,18 @@ void exec::InterleavedArrays(GlContext& c, GLenum format, GLsizei stride, const 
   if (!layout_of(format, l)) return c.set_error(GL_INVALID_ENUM);
   if (stride == 0) stride = l.stride;
   ClientArrays& a = c.arrays;
+  // GL 1.5: the arrays take the buffer bound to GL_ARRAY_BUFFER, `pointer` an offset into it.
+  const std::shared_ptr<BufferObject> buffer = a.array_buffer;
+  const GLuint name = a.array_buffer_name;
   a.edge_flag.enabled = false;
   a.index.enabled = false;
   a.texcoord.enabled = l.texcoords > 0;
-  if (l.texcoords > 0) a.texcoord = {true, l.texcoords, GL_FLOAT, stride, pointer};
+  if (l.texcoords > 0) a.texcoord = {true, l.texcoords, GL_FLOAT, stride, pointer, buffer, name};
   a.color.enabled = l.colors > 0;
-  if (l.colors > 0) a.color = {true, l.colors, l.color_type, stride, at(pointer, l.color_offset)};
+  if (l.colors > 0) a.color = {true, l.colors, l.color_type, stride, at(pointer, l.color_offset), buffer, name};
   a.normal.enabled = l.normals;
-  if (l.normals) a.normal = {true, 3, GL_FLOAT, stride, at(pointer, l.normal_offset)};
-  a.vertex = {true, l.vertices, GL_FLOAT, stride, at(pointer, l.vertex_offset)};
+  if (l.normals) a.normal = {true, 3, GL_FLOAT, stride, at(pointer, l.normal_offset), buffer, name};
+  a.vertex = {true, l.vertices, GL_FLOAT, stride, at(pointer, l.vertex_offset), buffer, name};
 }
 
 }  // namespace shadelab::gl

@@ -1,10 +1,11 @@
 // The matrix stacks and the viewport (GL 1.1 sections 2.10.1-2.10.2): glMatrixMode,
-// glLoad/MultMatrix, glPush/PopMatrix, glTranslate/Rotate/Scale, glFrustum, glOrtho,
+// glLoad/MultMatrix, glLoad/MultTransposeMatrix (GL 1.3), glPush/PopMatrix, glTranslate/Rotate/Scale, glFrustum, glOrtho,
 // glViewport, glDepthRange. Matrices only; vertices are transformed in draw.cpp.
 #include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/type_ptr.hpp>
+#include <glm/matrix.hpp>
 
 #include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
@@ -19,6 +20,13 @@ glm::mat4 from_column_major(const T* m) {
   glm::mat4 r;
   for (int i = 0; i < 16; ++i) r[i / 4][i % 4] = float(m[i]);
   return r;
+}
+
+// GL 1.3 section 2.10.2: glLoadTransposeMatrix and glMultTransposeMatrix take the matrix
+// row by row.
+template <class T>
+glm::mat4 from_row_major(const T* m) {
+  return glm::transpose(from_column_major(m));
 }
 
 template <class T>
@@ -74,6 +82,24 @@ void exec::LoadMatrixf(GlContext& c, const GLfloat* m) { load_matrix(c, m); }
 void exec::LoadMatrixd(GlContext& c, const GLdouble* m) { load_matrix(c, m); }
 void exec::MultMatrixf(GlContext& c, const GLfloat* m) { mult_matrix(c, m); }
 void exec::MultMatrixd(GlContext& c, const GLdouble* m) { mult_matrix(c, m); }
+
+// A null matrix is ignored, as Mesa ignores it.
+void exec::LoadTransposeMatrixf(GlContext& c, const GLfloat* m) {
+  if (!m) return;
+  c.current_stack().top() = from_row_major(m);
+}
+void exec::LoadTransposeMatrixd(GlContext& c, const GLdouble* m) {
+  if (!m) return;
+  c.current_stack().top() = from_row_major(m);
+}
+void exec::MultTransposeMatrixf(GlContext& c, const GLfloat* m) {
+  if (!m) return;
+  c.current_stack().top() *= from_row_major(m);
+}
+void exec::MultTransposeMatrixd(GlContext& c, const GLdouble* m) {
+  if (!m) return;
+  c.current_stack().top() *= from_row_major(m);
+}
 
 void exec::PushMatrix(GlContext& c) {
   MatrixStack& s = c.current_stack();

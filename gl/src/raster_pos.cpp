@@ -4,7 +4,9 @@
 // mapped to window coordinates, and takes the vertex's data: the colour lit with the front
 // material by the core's light_point (section 2.13; no copy of the equation here) or the
 // current colour, texture coordinates through the texture matrix, and the eye-space distance
-// for fog. Only state; glBitmap, glDrawPixels and glCopyPixels draw at it.
+// for fog. glWindowPos (GL 1.4; GL 1.5 section 2.12) sets it directly in window coordinates.
+// Only state; glBitmap, glDrawPixels and glCopyPixels draw at it.
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -107,6 +109,32 @@ void raster_pos_v(GlContext& c, const T* v, int n) {
   raster_pos(c, double(v[0]), double(v[1]), n > 2 ? double(v[2]) : 0.0, n > 3 ? double(v[3]) : 1.0);
 }
 
+// GL 1.5 section 2.12, glWindowPos: x and y are the window coordinates, z in [0, 1] is mapped
+// into the depth range (in single precision, as Mesa computes it), w is 1. Nothing is
+// transformed, lit or clipped: the position is valid, the colour is the current colour
+// (clamped, as Mesa clamps it), the texture coordinates are the current ones (no texture
+// matrix), the distance is the current fog coordinate when that is the fog source, else 0.
+void window_pos(GlContext& c, double x, double y, double z) {
+  RasterPosition& r = c.raster_pos;
+  const Viewport& vp = c.raster.viewport;
+  const float zc = std::clamp(float(z), 0.0f, 1.0f);
+  r.valid = true;
+  r.window = glm::vec4(float(x), float(y), zc * (vp.far_depth - vp.near_depth) + vp.near_depth, 1.0f);
+  r.color = glm::clamp(c.current.color, glm::vec4(0.0f), glm::vec4(1.0f));
+  // The current secondary colour and fog coordinate are GL 1.4 state not kept yet: their
+  // initial values, (0, 0, 0, 1) and a raster distance of 0.
+  r.secondary = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  r.distance = 0.0f;
+  r.texcoord = c.current.texcoord;
+  select_raster_position(c);
+}
+
+template <class T>
+void window_pos_v(GlContext& c, const T* v, int n) {
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  window_pos(c, double(v[0]), double(v[1]), n > 2 ? double(v[2]) : 0.0);
+}
+
 }  // namespace
 
 void exec::RasterPos2d(GlContext& c, GLdouble x, GLdouble y) { raster_pos(c, x, y, 0.0, 1.0); }
@@ -133,5 +161,23 @@ void exec::RasterPos4dv(GlContext& c, const GLdouble* v) { raster_pos_v(c, v, 4)
 void exec::RasterPos4fv(GlContext& c, const GLfloat* v) { raster_pos_v(c, v, 4); }
 void exec::RasterPos4iv(GlContext& c, const GLint* v) { raster_pos_v(c, v, 4); }
 void exec::RasterPos4sv(GlContext& c, const GLshort* v) { raster_pos_v(c, v, 4); }
+
+
+void exec::WindowPos2d(GlContext& c, GLdouble x, GLdouble y) { window_pos(c, x, y, 0.0); }
+void exec::WindowPos2f(GlContext& c, GLfloat x, GLfloat y) { window_pos(c, x, y, 0.0); }
+void exec::WindowPos2i(GlContext& c, GLint x, GLint y) { window_pos(c, x, y, 0.0); }
+void exec::WindowPos2s(GlContext& c, GLshort x, GLshort y) { window_pos(c, x, y, 0.0); }
+void exec::WindowPos3d(GlContext& c, GLdouble x, GLdouble y, GLdouble z) { window_pos(c, x, y, z); }
+void exec::WindowPos3f(GlContext& c, GLfloat x, GLfloat y, GLfloat z) { window_pos(c, x, y, z); }
+void exec::WindowPos3i(GlContext& c, GLint x, GLint y, GLint z) { window_pos(c, x, y, z); }
+void exec::WindowPos3s(GlContext& c, GLshort x, GLshort y, GLshort z) { window_pos(c, x, y, z); }
+void exec::WindowPos2dv(GlContext& c, const GLdouble* v) { window_pos_v(c, v, 2); }
+void exec::WindowPos2fv(GlContext& c, const GLfloat* v) { window_pos_v(c, v, 2); }
+void exec::WindowPos2iv(GlContext& c, const GLint* v) { window_pos_v(c, v, 2); }
+void exec::WindowPos2sv(GlContext& c, const GLshort* v) { window_pos_v(c, v, 2); }
+void exec::WindowPos3dv(GlContext& c, const GLdouble* v) { window_pos_v(c, v, 3); }
+void exec::WindowPos3fv(GlContext& c, const GLfloat* v) { window_pos_v(c, v, 3); }
+void exec::WindowPos3iv(GlContext& c, const GLint* v) { window_pos_v(c, v, 3); }
+void exec::WindowPos3sv(GlContext& c, const GLshort* v) { window_pos_v(c, v, 3); }
 
 }  // namespace shadelab::gl

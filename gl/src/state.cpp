@@ -42,6 +42,10 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_POLYGON_OFFSET_POINT: return &c.prims.offset_point;
     case GL_POLYGON_OFFSET_LINE: return &c.prims.offset_line;
     case GL_POLYGON_SMOOTH: return &c.prims.polygon_smooth;
+    case GL_MULTISAMPLE: return &c.multisample.enabled;
+    case GL_SAMPLE_ALPHA_TO_COVERAGE: return &c.multisample.alpha_to_coverage;
+    case GL_SAMPLE_ALPHA_TO_ONE: return &c.multisample.alpha_to_one;
+    case GL_SAMPLE_COVERAGE: return &c.multisample.coverage;
     default: return eval_capability_flag(c, cap);
   }
 }
@@ -82,6 +86,7 @@ int hint_slot(GLenum target) {
     case GL_LINE_SMOOTH_HINT: return 2;
     case GL_POLYGON_SMOOTH_HINT: return 3;
     case GL_FOG_HINT: return 4;
+    case GL_TEXTURE_COMPRESSION_HINT: return 5;
     default: return -1;
   }
 }

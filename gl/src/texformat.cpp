@@ -24,18 +24,20 @@ StoredFormat make(TextureFormat base, std::initializer_list<int> bits) {
 bool alpha_or_luminance(GLint internal, StoredFormat& out) {
   using F = TextureFormat;
   switch (internal) {
-    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: out = make(F::kAlpha, {8}); return true;
+    // GL 1.3's generic compressed formats are stored uncompressed, as their base formats.
+    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_COMPRESSED_ALPHA: out = make(F::kAlpha, {8}); return true;
     case GL_ALPHA12: case GL_ALPHA16: out = make(F::kAlpha, {16}); return true;
-    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: out = make(F::kLuminance, {8}); return true;
+    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_COMPRESSED_LUMINANCE: out = make(F::kLuminance, {8}); return true;
     case GL_LUMINANCE12: case GL_LUMINANCE16: out = make(F::kLuminance, {16}); return true;
     case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE6_ALPHA2: case GL_LUMINANCE8_ALPHA8:
+    case GL_COMPRESSED_LUMINANCE_ALPHA:
       out = make(F::kLuminanceAlpha, {8, 8});
       return true;
     case GL_LUMINANCE4_ALPHA4: out = make(F::kLuminanceAlpha, {4, 4}); return true;
     case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16:
       out = make(F::kLuminanceAlpha, {16, 16});
       return true;
-    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: out = make(F::kIntensity, {8}); return true;
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_COMPRESSED_INTENSITY: out = make(F::kIntensity, {8}); return true;
     case GL_INTENSITY12: case GL_INTENSITY16: out = make(F::kIntensity, {16}); return true;
     default: return false;
   }
@@ -44,13 +46,13 @@ bool alpha_or_luminance(GLint internal, StoredFormat& out) {
 bool rgb_or_rgba(GLint internal, StoredFormat& out) {
   using F = TextureFormat;
   switch (internal) {
-    case 3: case GL_RGB: case GL_RGB8: out = make(F::kRgb, {8, 8, 8}); return true;
+    case 3: case GL_RGB: case GL_RGB8: case GL_COMPRESSED_RGB: out = make(F::kRgb, {8, 8, 8}); return true;
     case GL_R3_G3_B2: out = make(F::kRgb, {3, 3, 2}); return true;
     case GL_RGB4: out = make(F::kRgb, {4, 4, 4}); return true;
     case GL_RGB5: out = make(F::kRgb, {5, 5, 5}); return true;
     case GL_RGB10: out = make(F::kRgb, {10, 10, 10}); return true;
     case GL_RGB12: case GL_RGB16: out = make(F::kRgb, {16, 16, 16}); return true;
-    case 4: case GL_RGBA: case GL_RGBA8: out = make(F::kRgba, {8, 8, 8, 8}); return true;
+    case 4: case GL_RGBA: case GL_RGBA8: case GL_COMPRESSED_RGBA: out = make(F::kRgba, {8, 8, 8, 8}); return true;
     case GL_RGBA2: case GL_RGBA4: out = make(F::kRgba, {4, 4, 4, 4}); return true;
     case GL_RGB5_A1: out = make(F::kRgba, {5, 5, 5, 1}); return true;
     case GL_RGB10_A2: out = make(F::kRgba, {10, 10, 10, 2}); return true;

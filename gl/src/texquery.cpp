@@ -31,9 +31,24 @@ bool is_level_pname(GLenum pname) {
     case GL_TEXTURE_WIDTH: case GL_TEXTURE_HEIGHT: case kTextureDepth: case GL_TEXTURE_BORDER:
     case GL_TEXTURE_INTERNAL_FORMAT: case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE:
     case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_LUMINANCE_SIZE:
-    case GL_TEXTURE_INTENSITY_SIZE:
+    case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_COMPRESSED:
       return true;
     default: return false;
+  }
+}
+
+// GL 1.3 section 3.8.1: a generic compressed internal format with no specific compressed
+// format to choose is replaced by its base internal format, which is what is reported (as
+// Mesa reports it for an image it did not compress).
+GLint reported_internal_format(GLint internal) {
+  switch (internal) {
+    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+    case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+    case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+    case GL_COMPRESSED_RGB: return GL_RGB;
+    case GL_COMPRESSED_RGBA: return GL_RGBA;
+    default: return internal;
   }
 }
 
@@ -45,7 +60,8 @@ GLint level_parameter(const TexImage& img, GLenum pname) {
     case GL_TEXTURE_HEIGHT: return img.height;
     case kTextureDepth: return 1;
     case GL_TEXTURE_BORDER: return img.border;
-    case GL_TEXTURE_INTERNAL_FORMAT: return img.internal_format;
+    case GL_TEXTURE_INTERNAL_FORMAT: return reported_internal_format(img.internal_format);
+    case GL_TEXTURE_COMPRESSED: return GL_FALSE;  // GL 1.3: no image is ever compressed
     default: return component_size(img.format, pname);
   }
 }
@@ -55,6 +71,8 @@ void get_level_parameter(GlContext& c, GLenum target, GLint level, GLenum pname,
   const std::vector<TexImage>* images = level_images(c, target);
   if (!images) return c.set_error(GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  // GL 1.3: no image is compressed, so none has a compressed size (Mesa's code).
+  if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) return c.set_error(GL_INVALID_OPERATION);
   if (!is_level_pname(pname)) return c.set_error(GL_INVALID_ENUM);
   if (!params) return;
   const TexImage none;
