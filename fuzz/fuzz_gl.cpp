@@ -132,13 +132,14 @@ struct ListCalls {
   }
 };
 
-// Whether a buffer object is bound to GL_ARRAY_BUFFER: array pointers are offsets then, else
-// they must point into our arrays.
-bool array_buffer_bound() {
+// Whether a buffer object is bound (GL_ARRAY_BUFFER_BINDING or GL_ELEMENT_ARRAY_BUFFER_BINDING):
+// array pointers or indices are offsets then, else they must point into our memory.
+bool buffer_bound(GLenum binding) {
   GLint name = 0;
-  glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &name);  // unchanged between glBegin and glEnd
+  glGetIntegerv(binding, &name);  // unchanged between glBegin and glEnd
   return name != 0;
 }
+bool array_buffer_bound() { return buffer_bound(GL_ARRAY_BUFFER_BINDING); }
 
 }  // namespace
 
@@ -302,7 +303,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool buffer = in.byte() % 4 == 0;
         if (buffer) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, GLuint(in.small(0, 3)));
         else glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
-        const void* indices = buffer ? reinterpret_cast<void*>(std::uintptr_t(in.small(0, 16) * 4)) : b->indices;
+        const std::uintptr_t offset = std::uintptr_t(in.small(0, 16) * 4);
+        const void* indices = buffer_bound(GL_ELEMENT_ARRAY_BUFFER_BINDING) ? reinterpret_cast<void*>(offset) : b->indices;
         const GLint first[3] = {in.small(-1, kElements / 2), in.small(0, kElements / 2), 0};
         // (glMultiDrawArrays reads up to element first + count: at most kElements.)
         const GLsizei count[3] = {in.small(-1, kElements / 2), in.small(0, kElements / 2), in.small(0, 3)};
