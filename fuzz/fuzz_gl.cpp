@@ -79,6 +79,8 @@ class Input {
         GL_EYE_PLANE, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q, GL_INTENSITY, GL_RGB5_A1, GL_RGBA16,
         GL_R3_G3_B2, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_WIDTH, GL_TEXTURE_BORDER,
         GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
+        // GL 1.4's per-vertex state: the colour sum, the secondary colour array.
+        GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -165,7 +167,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 4: glVertex3f(in.number(), in.number(), in.number()); break;
       case 5: glVertex4f(in.number(), in.number(), in.number(), in.number()); break;
       case 6: glNormal3f(in.number(), in.number(), in.number()); break;
-      case 7: glColor4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 7:  // the primary colour, or GL 1.4's secondary colour
+        if (in.byte() % 4) glColor4f(in.number(), in.number(), in.number(), in.number());
+        else glSecondaryColor3f(in.number(), in.number(), in.number());
+        break;
       case 8: glTexCoord2f(in.number(), in.number()); break;
       case 9:
         for (float& v : f) v = in.number();
@@ -198,13 +203,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 28: glShadeModel(in.any_enum()); break;
       case 29: glPolygonOffset(in.number(), in.number()); break;
       case 30: {  // arrays: pointers into our buffers, strides that stay inside them
-        int which = in.byte() % 4, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
+        int which = in.byte() % 5, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
         GLenum type = in.any_enum();
-        void* p = b->arrays[which];
+        void* p = b->arrays[which % 4];
         if (which == 0) glVertexPointer(sz, type, stride, p);
         else if (which == 1) glNormalPointer(type, stride, p);
         else if (which == 2) glColorPointer(sz, type, stride, p);
-        else glTexCoordPointer(sz, type, stride, p);
+        else if (which == 3) glTexCoordPointer(sz, type, stride, p);
+        else glSecondaryColorPointer(sz, type, stride, p);
         break;
       }
       case 31: glEnableClientState(in.any_enum()); break;

@@ -34,7 +34,9 @@ void light_vertex(const GlContext& c, const PrimitiveVertex& v, VertexColors& ou
     // Colours are clamped to [0, 1] per vertex (GL 1.1 section 2.13.6), before interpolation.
     glm::vec4 col = glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f));
     out.front = out.back = col;
-    out.front_secondary = out.back_secondary = glm::vec3(0.0f);
+    // The secondary colour (GL 1.4 section 2.7), clamped alike; added when GL_COLOR_SUM is on.
+    const glm::vec3 sec = glm::clamp(sanitize(glm::vec3(c.current.secondary)), glm::vec3(0.0f), glm::vec3(1.0f));
+    out.front_secondary = out.back_secondary = sec;
     return;
   }
   glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
@@ -269,6 +271,8 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     in.secondary_colors = batch.s.secondary;
     if (c.lighting.model.two_side) in.back_secondary_colors = batch.s.back_secondary;
   }
+  // GL 1.4 section 3.9: unlit, the colour sum adds the vertices' secondary colours.
+  if (!l.enabled && c.fog.color_sum) in.secondary_colors = batch.s.secondary;
   if (shade.texture || p.textured) in.texcoords = batch.s.texcoords;
   in.stipple_counter = &p.stipple_counter;
   if (observe) {

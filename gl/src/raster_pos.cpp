@@ -65,9 +65,9 @@ glm::vec3 eye_normal(const GlContext& c, const glm::mat4& modelview) {
 // 2.13.6), or the current colour as it is, as Mesa keeps it.
 void set_color(GlContext& c, const glm::vec4& eye, const glm::mat4& modelview) {
   RasterPosition& r = c.raster_pos;
-  if (!c.lighting.enabled) {
+  if (!c.lighting.enabled) {  // the current colours as they are (GL 1.4: the secondary too)
     r.color = c.current.color;
-    r.secondary = glm::vec4(0.0f);
+    r.secondary = c.current.secondary;
     return;
   }
   std::vector<Light> lights;

@@ -86,6 +86,7 @@ struct ArrayScratch {
   detail::ScratchVector<glm::vec3> normals;
   detail::ScratchVector<glm::vec4> texcoords;      // (s, t, r, q) after the texture matrix
   detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
+  detail::ScratchVector<glm::vec3> secondary;      // GL_COLOR_SUM unlit: clamped secondary colours
   detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
   detail::ScratchVector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
   detail::ScratchVector<Triangle> triangles;
