@@ -81,6 +81,7 @@ class Input {
         GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
         // GL 1.4's per-vertex state: the colour sum, the secondary colour array.
         GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
+        GL_FOG_COORD_ARRAY, GL_FOG_COORD_SRC, GL_FOG_COORD, GL_FRAGMENT_DEPTH, GL_CURRENT_FOG_COORD,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -169,7 +170,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 6: glNormal3f(in.number(), in.number(), in.number()); break;
       case 7:  // the primary colour, or GL 1.4's secondary colour
         if (in.byte() % 4) glColor4f(in.number(), in.number(), in.number(), in.number());
-        else glSecondaryColor3f(in.number(), in.number(), in.number());
+        else if (in.byte() % 2) glSecondaryColor3f(in.number(), in.number(), in.number());
+        else glFogCoordf(in.number());
         break;
       case 8: glTexCoord2f(in.number(), in.number()); break;
       case 9:
@@ -203,14 +205,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 28: glShadeModel(in.any_enum()); break;
       case 29: glPolygonOffset(in.number(), in.number()); break;
       case 30: {  // arrays: pointers into our buffers, strides that stay inside them
-        int which = in.byte() % 5, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
+        int which = in.byte() % 6, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
         GLenum type = in.any_enum();
         void* p = b->arrays[which % 4];
         if (which == 0) glVertexPointer(sz, type, stride, p);
         else if (which == 1) glNormalPointer(type, stride, p);
         else if (which == 2) glColorPointer(sz, type, stride, p);
         else if (which == 3) glTexCoordPointer(sz, type, stride, p);
-        else glSecondaryColorPointer(sz, type, stride, p);
+        else if (which == 4) glSecondaryColorPointer(sz, type, stride, p);
+        else glFogCoordPointer(type, stride, p);
         break;
       }
       case 31: glEnableClientState(in.any_enum()); break;

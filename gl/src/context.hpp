@@ -148,6 +148,8 @@ struct FogSettings {
   // the primary when lighting is off), both in the fog attribute group.
   GLenum coord_source = GL_FRAGMENT_DEPTH;
   bool color_sum = false;
+  /// Whether fragments are fogged by the vertices' fog coordinates (GL_FOG_COORDINATE source).
+  bool by_coordinates() const { return enabled && coord_source == GL_FOG_COORDINATE; }
 };
 
 // Mesa's limits for points and lines (glGet GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE and

@@ -1,5 +1,5 @@
 // The current vertex attributes (GL 1.1 section 2.7): glColor*, glNormal3*, glTexCoord*,
-// glIndex* and glEdgeFlag* in every type and size, and GL 1.4's glSecondaryColor3*. Each
+// glIndex* and glEdgeFlag* in every type and size, GL 1.4's glSecondaryColor3* and glFogCoord*. Each
 // converts its arguments (table 2.6 for colours and normals) and records them in
 // GlContext::current; nothing is drawn here (a vertex takes them in draw.cpp's emit_vertex).
 #include <type_traits>
@@ -69,6 +69,15 @@ template <class T>
 void secondary_v(GlContext& c, const T* v) {
   if (!v) return c.set_error(GL_INVALID_VALUE);
   secondary3(c, v[0], v[1], v[2]);
+}
+
+// The current fog coordinate (GL 1.4 section 2.7), as given.
+void fog_coord(GlContext& c, double f) { c.current.fog_coord = float(f); }
+
+template <class T>
+void fog_coord_v(GlContext& c, const T* v) {
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  fog_coord(c, double(v[0]));
 }
 
 // The colour index: stored and reported in an RGBA context, where it colours nothing
@@ -190,6 +199,11 @@ void exec::SecondaryColor3dv(GlContext& c, const GLdouble* v) { secondary_v(c, v
 void exec::SecondaryColor3ubv(GlContext& c, const GLubyte* v) { secondary_v(c, v); }
 void exec::SecondaryColor3usv(GlContext& c, const GLushort* v) { secondary_v(c, v); }
 void exec::SecondaryColor3uiv(GlContext& c, const GLuint* v) { secondary_v(c, v); }
+
+void exec::FogCoordf(GlContext& c, GLfloat f) { fog_coord(c, f); }
+void exec::FogCoordd(GlContext& c, GLdouble f) { fog_coord(c, f); }
+void exec::FogCoordfv(GlContext& c, const GLfloat* v) { fog_coord_v(c, v); }
+void exec::FogCoorddv(GlContext& c, const GLdouble* v) { fog_coord_v(c, v); }
 
 // The edge flag (section 2.6.2) is kept as the number given, as Mesa keeps it: GL_EDGE_FLAG
 // reads GL_TRUE only for exactly 1 (glEdgeFlag(2) reads back GL_FALSE there too).

@@ -55,6 +55,7 @@ class ElementLoader {
 /// output is null when the draw does not read that attribute.
 struct ExtraOutputs {
   glm::vec3* secondary = nullptr;  ///< secondary colours, red, green and blue as given
+  float* fog = nullptr;            ///< fog coordinates as given
 };
 /// Loads GL 1.4's attributes of array elements first .. first + n - 1 (from their arrays, or
 /// the current values where an array is disabled).

@@ -82,6 +82,8 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_SECONDARY_COLOR_ARRAY_SIZE: out = array_state(a.secondary_color, true); return true;
     case GL_SECONDARY_COLOR_ARRAY_TYPE: out = ints({double(a.secondary_color.type)}); return true;
     case GL_SECONDARY_COLOR_ARRAY_STRIDE: out = ints({double(a.secondary_color.stride)}); return true;
+    case GL_FOG_COORD_ARRAY_TYPE: out = ints({double(a.fog_coord.type)}); return true;
+    case GL_FOG_COORD_ARRAY_STRIDE: out = ints({double(a.fog_coord.stride)}); return true;
     default: break;
   }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
@@ -105,6 +107,7 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
     case GL_CURRENT_INDEX: out = make(Kind::kFloat, {c.current.index}); return true;
     case GL_CURRENT_SECONDARY_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.secondary), 4); return true;
+    case GL_CURRENT_FOG_COORD: out = make(Kind::kFloat, {c.current.fog_coord}); return true;
     case GL_EDGE_FLAG: out = make(Kind::kBool, {double(c.current.edge_flag == 1.0f)}); return true;
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
@@ -166,6 +169,7 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_END: out = make(Kind::kFloat, {c.fog.end}); return true;
     case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
     case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
+    case GL_FOG_COORD_SRC: out = ints({double(c.fog.coord_source)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
@@ -364,6 +368,7 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
     case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
     case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
     case GL_SECONDARY_COLOR_ARRAY_POINTER: p = a.secondary_color.pointer; break;
+    case GL_FOG_COORD_ARRAY_POINTER: p = a.fog_coord.pointer; break;
     case GL_FEEDBACK_BUFFER_POINTER: p = c.feedback.buffer; break;
     case GL_SELECTION_BUFFER_POINTER: p = c.selection.buffer; break;
     default: return c.set_error(GL_INVALID_ENUM);

@@ -95,7 +95,9 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   }
   r.valid = true;
   r.window = glm::vec4(window_of(c.raster.viewport, clip), clip.w);
-  r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  // GL 1.4 section 2.12: the fog coordinate, or the eye distance (Mesa's choice of distance).
+  r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
+                                                        : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
   r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
   select_raster_position(c);
