@@ -82,6 +82,7 @@ class Input {
         // GL 1.4's per-vertex state: the colour sum, the secondary colour array.
         GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
         GL_FOG_COORD_ARRAY, GL_FOG_COORD_SRC, GL_FOG_COORD, GL_FRAGMENT_DEPTH, GL_CURRENT_FOG_COORD,
+        GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -282,12 +283,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
-      case 46: {  // fog parameters through every form
+      case 46: {  // fog and point parameters through every form
         for (float& v : f) v = in.number();
         const GLint iv[4] = {GLint(in.any_enum()), in.small(-3, 3) << 29, in.small(-100, 100), 0x7fffffff};
         const GLenum pname = in.any_enum();
-        if (in.byte() % 2) glFogfv(pname, f), glFogf(pname, f[0]);
-        else glFogiv(pname, iv), glFogi(pname, iv[0]);
+        const int form = in.byte() % 6;
+        if (form < 2) glFogfv(pname, f), glFogf(pname, f[0]);
+        else if (form < 4) glFogiv(pname, iv), glFogi(pname, iv[0]);
+        else if (form == 4) glPointParameterfv(pname, f), glPointParameterf(pname, f[0]), glPointSize(f[1]);
+        else glPointParameteriv(pname, iv), glPointParameteri(pname, iv[0]);
         break;
       }
       case 47: glScissor(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;

@@ -227,6 +227,10 @@ void restore_line(GlContext& c, const AttribRecord& r) {
 void restore_point(GlContext& c, const AttribRecord& r) {
   c.prims.point_size = r.prims.point_size;
   c.prims.point_smooth = r.prims.point_smooth;
+  c.prims.point_min = r.prims.point_min;  // GL 1.4's point parameters (table 6.11)
+  c.prims.point_max = r.prims.point_max;
+  c.prims.point_fade = r.prims.point_fade;
+  c.prims.point_attenuation = r.prims.point_attenuation;
 }
 
 void restore_polygon(GlContext& c, const AttribRecord& r) {

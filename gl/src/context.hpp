@@ -155,12 +155,18 @@ struct FogSettings {
 // Mesa's limits for points and lines (glGet GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE and
 // their granularity) and its number of user clip planes.
 inline constexpr float kMaxPointSize = 255.0f, kMaxLineWidth = 255.0f, kSizeGranularity = 0.1f;
+// The least derived size of an attenuated point (Mesa's MinPointSize: the vertex program's clamp).
+inline constexpr float kMinPointSize = 1.0f;
 inline constexpr int kMaxClipPlanes = 8;
 
 /// Points, lines, the polygon modes and the user clip planes (GL 1.1 sections 2.11, 3.3-3.5).
 struct PrimState {
   GLfloat point_size = 1.0f;
   bool point_smooth = false;
+  // glPointParameter (GL 1.4 section 3.3): the derived size's clamps, the fade threshold
+  // (stored and reported) and the distance attenuation coefficients (a, b, c).
+  GLfloat point_min = 0.0f, point_max = kMaxPointSize, point_fade = 1.0f;
+  glm::vec3 point_attenuation{1.0f, 0.0f, 0.0f};
   GLfloat line_width = 1.0f;
   bool line_smooth = false, line_stipple = false;
   GLushort stipple_pattern = 0xffff;

@@ -132,7 +132,10 @@ void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::
 // (a smooth one's rim besides), and one for rounding.
 int prim_margin(const GlContext& c) {
   const PrimState& p = c.prims;  // sizes as drawn: clamped, a NaN as 1 (never cast unbounded)
-  const float widest = std::max(raster_size(p.point_size, 0.0f, kMaxPointSize),
+  // An attenuated point may be as large as GL_POINT_SIZE_MAX allows (GL 1.4 section 3.3).
+  const bool attenuated = p.point_attenuation != glm::vec3(1.0f, 0.0f, 0.0f);
+  const float point = attenuated ? std::max(p.point_size, p.point_max) : p.point_size;
+  const float widest = std::max(raster_size(point, 0.0f, kMaxPointSize),
                                 raster_size(p.line_width, 1.0f, kMaxLineWidth));
   return 2 + int(std::ceil(widest / 2.0f));
 }

@@ -283,6 +283,12 @@ bool query_prims(const GlContext& c, GLenum pname, Values& out) {
     case GL_POINT_SIZE_GRANULARITY:
       out = make(Kind::kFloat, {kSizeGranularity});
       return true;
+    case GL_POINT_SIZE_MIN: out = make(Kind::kFloat, {p.point_min}); return true;
+    case GL_POINT_SIZE_MAX: out = make(Kind::kFloat, {p.point_max}); return true;
+    case GL_POINT_FADE_THRESHOLD_SIZE: out = make(Kind::kFloat, {p.point_fade}); return true;
+    case GL_POINT_DISTANCE_ATTENUATION:
+      out = make(Kind::kFloat, {p.point_attenuation.x, p.point_attenuation.y, p.point_attenuation.z});
+      return true;
     case GL_LINE_WIDTH:
       out = make(Kind::kFloat, {p.line_width});
       return true;
