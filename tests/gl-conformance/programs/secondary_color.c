@@ -66,10 +66,12 @@ static void textured(GLuint tex) {
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   glBegin(GL_QUADS);
   glColor3f(1.0f, 1.0f, 1.0f);
-  glSecondaryColor3f(0.0f, 0.0f, 0.0f); glTexCoord2f(0, 0); glVertex2f(-0.9f, -0.9f);
-  glSecondaryColor3f(0.5f, 0.0f, 0.0f); glTexCoord2f(1, 0); glVertex2f(0.9f, -0.9f);
-  glSecondaryColor3f(0.0f, 0.5f, 0.0f); glTexCoord2f(1, 1); glVertex2f(0.9f, 0.9f);
-  glSecondaryColor3f(0.0f, 0.0f, 0.5f); glTexCoord2f(0, 1); glVertex2f(-0.9f, 0.9f);
+  /* (Texture coordinates off the texel edges at pixel centres: nearest sampling there is not
+   * what this program compares.) */
+  glSecondaryColor3f(0.0f, 0.0f, 0.0f); glTexCoord2f(0.013f, 0.017f); glVertex2f(-0.9f, -0.9f);
+  glSecondaryColor3f(0.5f, 0.0f, 0.0f); glTexCoord2f(0.981f, 0.017f); glVertex2f(0.9f, -0.9f);
+  glSecondaryColor3f(0.0f, 0.5f, 0.0f); glTexCoord2f(0.981f, 0.977f); glVertex2f(0.9f, 0.9f);
+  glSecondaryColor3f(0.0f, 0.0f, 0.5f); glTexCoord2f(0.013f, 0.977f); glVertex2f(-0.9f, 0.9f);
   glEnd();
   glDisable(GL_TEXTURE_2D);
 }
@@ -256,7 +258,9 @@ static void lines_and_points(void) {
   glPointSize(1.0f);
 }
 
-static void record_current(const char* name) {
+/* `ints`: the glGetIntegerv form too (not for components outside [-1, 1], which Mesa 22 wraps
+ * around where the specification clamps them, as shadelab does). */
+static void record_current_as(const char* name, int ints) {
   GLfloat f[4];
   GLint i[4];
   GLdouble d[4];
@@ -270,13 +274,15 @@ static void record_current(const char* name) {
     snprintf(label, sizeof label, "%s f[%d]", name, k);
     conf_value(&c, label, f[k]);
     snprintf(label, sizeof label, "%s i[%d]", name, k);
-    conf_value(&c, label, i[k]);
+    if (ints) conf_value(&c, label, i[k]);
     snprintf(label, sizeof label, "%s d[%d]", name, k);
     conf_value(&c, label, d[k]);
     snprintf(label, sizeof label, "%s b[%d]", name, k);
     conf_value(&c, label, b[k]);
   }
 }
+
+static void record_current(const char* name) { record_current_as(name, 1); }
 
 static void values(void) {
   record_current("initial");
@@ -293,9 +299,9 @@ static void values(void) {
   glSecondaryColor3ui(0, 4294967295u, 1);
   record_current("3ui");
   glSecondaryColor3f(-2.0f, 3.5f, 0.25f);
-  record_current("3f");
+  record_current_as("3f", 0);
   glSecondaryColor3d(1e10, -1e10, 0.125);
-  record_current("3d");
+  record_current_as("3d", 0);
   glBegin(GL_POINTS);
   glSecondaryColor3f(0.5f, 0.25f, 0.125f); /* legal between glBegin and glEnd */
   glEnd();
@@ -352,16 +358,18 @@ static void values(void) {
   glDisableClientState(GL_SECONDARY_COLOR_ARRAY);
 
   /* Errors: size, type, stride; the pointer stays as it was. */
+  glSecondaryColorPointer(3, GL_SHORT, 6, sec_s);
   glSecondaryColorPointer(2, GL_FLOAT, 0, sec_f);
   conf_error(&c, "pointer size 2");
   glSecondaryColorPointer(5, GL_FLOAT, 0, sec_f);
   conf_error(&c, "pointer size 5");
   glSecondaryColorPointer(3, GL_BITMAP, 0, sec_f);
   conf_error(&c, "pointer type bitmap");
-  glSecondaryColorPointer(3, GL_FLOAT, -4, sec_f);
-  conf_error(&c, "pointer stride -4");
   glGetIntegerv(GL_SECONDARY_COLOR_ARRAY_TYPE, &v);
   conf_value(&c, "array type after errors", v);
+  /* Last: Mesa 22 raises the error and still takes the pointer (the specification: no effect). */
+  glSecondaryColorPointer(3, GL_FLOAT, -4, sec_f);
+  conf_error(&c, "pointer stride -4");
   glBegin(GL_POINTS);
   glSecondaryColorPointer(3, GL_FLOAT, 0, sec_f);
   glEnd();
