@@ -81,6 +81,10 @@ class Input {
         GL_EYE_PLANE, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q, GL_INTENSITY, GL_RGB5_A1, GL_RGBA16,
         GL_R3_G3_B2, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_WIDTH, GL_TEXTURE_BORDER,
         GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
+        // GL 1.4's per-vertex state: the colour sum, the secondary colour array.
+        GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
+        GL_FOG_COORD_ARRAY, GL_FOG_COORD_SRC, GL_FOG_COORD, GL_FRAGMENT_DEPTH, GL_CURRENT_FOG_COORD,
+        GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -167,7 +171,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 4: glVertex3f(in.number(), in.number(), in.number()); break;
       case 5: glVertex4f(in.number(), in.number(), in.number(), in.number()); break;
       case 6: glNormal3f(in.number(), in.number(), in.number()); break;
-      case 7: glColor4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 7:  // the primary colour, or GL 1.4's secondary colour
+        if (in.byte() % 4) glColor4f(in.number(), in.number(), in.number(), in.number());
+        else if (in.byte() % 2) glSecondaryColor3f(in.number(), in.number(), in.number());
+        else glFogCoordf(in.number());
+        break;
       case 8: glTexCoord2f(in.number(), in.number()); break;
       case 9:
         for (float& v : f) v = in.number();
@@ -200,13 +208,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 28: glShadeModel(in.any_enum()); break;
       case 29: glPolygonOffset(in.number(), in.number()); break;
       case 30: {  // arrays: pointers into our buffers, strides that stay inside them
-        int which = in.byte() % 4, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
+        int which = in.byte() % 6, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
         GLenum type = in.any_enum();
-        void* p = b->arrays[which];
+        void* p = b->arrays[which % 4];
         if (which == 0) glVertexPointer(sz, type, stride, p);
         else if (which == 1) glNormalPointer(type, stride, p);
         else if (which == 2) glColorPointer(sz, type, stride, p);
-        else glTexCoordPointer(sz, type, stride, p);
+        else if (which == 3) glTexCoordPointer(sz, type, stride, p);
+        else if (which == 4) glSecondaryColorPointer(sz, type, stride, p);
+        else glFogCoordPointer(type, stride, p);
         break;
       }
       case 31: glEnableClientState(in.any_enum()); break;
@@ -275,12 +285,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
-      case 46: {  // fog parameters through every form
+      case 46: {  // fog and point parameters through every form
         for (float& v : f) v = in.number();
         const GLint iv[4] = {GLint(in.any_enum()), in.small(-3, 3) << 29, in.small(-100, 100), 0x7fffffff};
         const GLenum pname = in.any_enum();
-        if (in.byte() % 2) glFogfv(pname, f), glFogf(pname, f[0]);
-        else glFogiv(pname, iv), glFogi(pname, iv[0]);
+        const int form = in.byte() % 6;
+        if (form < 2) glFogfv(pname, f), glFogf(pname, f[0]);
+        else if (form < 4) glFogiv(pname, iv), glFogi(pname, iv[0]);
+        else if (form == 4) glPointParameterfv(pname, f), glPointParameterf(pname, f[0]), glPointSize(f[1]);
+        else glPointParameteriv(pname, iv), glPointParameteri(pname, iv[0]);
         break;
       }
       case 47: glScissor(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;

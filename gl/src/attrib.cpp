@@ -19,6 +19,7 @@ namespace {
 constexpr GLenum kCapabilities[] = {
     GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
     GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL,
+    GL_COLOR_SUM,
     GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_INDEX_LOGIC_OP, GL_LIGHTING,
     GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
     GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
@@ -226,6 +227,10 @@ void restore_line(GlContext& c, const AttribRecord& r) {
 void restore_point(GlContext& c, const AttribRecord& r) {
   c.prims.point_size = r.prims.point_size;
   c.prims.point_smooth = r.prims.point_smooth;
+  c.prims.point_min = r.prims.point_min;  // GL 1.4's point parameters (table 6.11)
+  c.prims.point_max = r.prims.point_max;
+  c.prims.point_fade = r.prims.point_fade;
+  c.prims.point_attenuation = r.prims.point_attenuation;
 }
 
 void restore_polygon(GlContext& c, const AttribRecord& r) {

@@ -78,6 +78,10 @@ struct CurrentAttribs {
   glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
   float index = 1.0f;      // GL_CURRENT_INDEX: kept, colours nothing in an RGBA context
   float edge_flag = 1.0f;  // GL_EDGE_FLAG as given (GL_TRUE only when exactly 1, as Mesa's)
+  // GL 1.4 section 2.7: GL_CURRENT_SECONDARY_COLOR (glSecondaryColor3* sets red, green and
+  // blue; alpha stays 1, as Mesa's) and GL_CURRENT_FOG_COORDINATE.
+  glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};
+  float fog_coord = 0.0f;
 };
 
 /// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
@@ -139,17 +143,30 @@ struct FogSettings {
   glm::vec4 color{0.0f};  // clamped to [0, 1]
   float density = 1.0f, start = 0.0f, end = 1.0f;
   float index = 0.0f;  // GL_FOG_INDEX: stored and reported (colour-index mode only)
+  // GL 1.4: GL_FOG_COORDINATE_SOURCE (section 3.10: the per-vertex fog coordinate or the
+  // fragment's eye distance) and GL_COLOR_SUM (section 3.9: the secondary colour added to
+  // the primary when lighting is off), both in the fog attribute group.
+  GLenum coord_source = GL_FRAGMENT_DEPTH;
+  bool color_sum = false;
+  /// Whether fragments are fogged by the vertices' fog coordinates (GL_FOG_COORDINATE source).
+  bool by_coordinates() const { return enabled && coord_source == GL_FOG_COORDINATE; }
 };
 
 // Mesa's limits for points and lines (glGet GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE and
 // their granularity) and its number of user clip planes.
 inline constexpr float kMaxPointSize = 255.0f, kMaxLineWidth = 255.0f, kSizeGranularity = 0.1f;
+// The least derived size of an attenuated point (Mesa's MinPointSize: the vertex program's clamp).
+inline constexpr float kMinPointSize = 1.0f;
 inline constexpr int kMaxClipPlanes = 8;
 
 /// Points, lines, the polygon modes and the user clip planes (GL 1.1 sections 2.11, 3.3-3.5).
 struct PrimState {
   GLfloat point_size = 1.0f;
   bool point_smooth = false;
+  // glPointParameter (GL 1.4 section 3.3): the derived size's clamps, the fade threshold
+  // (stored and reported) and the distance attenuation coefficients (a, b, c).
+  GLfloat point_min = 0.0f, point_max = kMaxPointSize, point_fade = 1.0f;
+  glm::vec3 point_attenuation{1.0f, 0.0f, 0.0f};
   GLfloat line_width = 1.0f;
   bool line_smooth = false, line_stipple = false;
   GLushort stipple_pattern = 0xffff;
@@ -178,6 +195,7 @@ struct ClientArray {
 
 struct ClientArrays {
   ClientArray vertex, normal{false, 3}, color, texcoord;
+  ClientArray secondary_color{false, 3}, fog_coord{false, 1};  // GL 1.4 section 2.8
   ClientArray index{false, 1};                        // colour indices: current index only
   ClientArray edge_flag{false, 1, GL_UNSIGNED_BYTE};  // GLboolean elements
 };

@@ -100,7 +100,18 @@ FragmentState fragment_state(const GlContext& c) {
   f.line = {raster_size(p.line_width, 1.0f, kMaxLineWidth), p.line_smooth,
             p.line_stipple && p.stipple_pattern != 0xffff, p.stipple_pattern,
             GLushort(p.stipple_repeat)};
+  // GL 1.4 section 3.3: the derived size clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX]. As
+  // in Mesa, glPointSize's size is clamped so when nothing attenuates it; else the core derives
+  // each point's size and clamps it (never below kMinPointSize). The fade threshold applies to
+  // multisampled points only: it changes nothing here (nor in llvmpipe).
   f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
+  f.point.attenuation = p.point_attenuation;
+  f.point.min_size = std::max(p.point_min, kMinPointSize);
+  f.point.max_size = std::min(p.point_max, kMaxPointSize);
+  if (!f.point.attenuated()) {
+    const float s = p.point_size < p.point_min ? p.point_min : p.point_size > p.point_max ? p.point_max : p.point_size;
+    f.point.size = raster_size(s, 0.0f, kMaxPointSize);
+  }
   for (int i = 0; i < kMaxClipPlanes; ++i) {
     f.clip.eye[std::size_t(i)] = p.clip_planes[std::size_t(i)];
     if (p.clip_enabled[std::size_t(i)]) f.clip.enabled |= std::uint8_t(1u << i);

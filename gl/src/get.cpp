@@ -53,6 +53,10 @@ Values vec(Kind k, const float* p, int n) {
 
 Values ints(std::initializer_list<double> xs) { return make(Kind::kInt, xs); }
 
+// GL_CURRENT_RASTER_SECONDARY_COLOR: the raster position's secondary colour, which Mesa
+// answers (the enum came with GL 3.0's compatibility tables, not in a GL 1.x feature).
+constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
+
 Values array_state(const ClientArray& a, bool with_size) {
   return with_size ? ints({double(a.size)}) : ints({});
 }
@@ -75,6 +79,11 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_ARRAY_TYPE: out = ints({double(a.index.type)}); return true;
     case GL_INDEX_ARRAY_STRIDE: out = ints({double(a.index.stride)}); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(a.edge_flag.stride)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY_SIZE: out = array_state(a.secondary_color, true); return true;
+    case GL_SECONDARY_COLOR_ARRAY_TYPE: out = ints({double(a.secondary_color.type)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE: out = ints({double(a.secondary_color.stride)}); return true;
+    case GL_FOG_COORD_ARRAY_TYPE: out = ints({double(a.fog_coord.type)}); return true;
+    case GL_FOG_COORD_ARRAY_STRIDE: out = ints({double(a.fog_coord.stride)}); return true;
     default: break;
   }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
@@ -97,6 +106,8 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_NORMAL: out = vec(Kind::kColor, glm::value_ptr(c.current.normal), 3); return true;
     case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
     case GL_CURRENT_INDEX: out = make(Kind::kFloat, {c.current.index}); return true;
+    case GL_CURRENT_SECONDARY_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.secondary), 4); return true;
+    case GL_CURRENT_FOG_COORD: out = make(Kind::kFloat, {c.current.fog_coord}); return true;
     case GL_EDGE_FLAG: out = make(Kind::kBool, {double(c.current.edge_flag == 1.0f)}); return true;
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
@@ -158,6 +169,7 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_END: out = make(Kind::kFloat, {c.fog.end}); return true;
     case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
     case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
+    case GL_FOG_COORD_SRC: out = ints({double(c.fog.coord_source)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
@@ -195,6 +207,7 @@ bool query_pixels(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_RASTER_POSITION: out = vec(Kind::kFloat, glm::value_ptr(r.window), 4); return true;
     case GL_CURRENT_RASTER_POSITION_VALID: out = make(Kind::kBool, {double(r.valid)}); return true;
     case GL_CURRENT_RASTER_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.color), 4); return true;
+    case kCurrentRasterSecondaryColor: out = vec(Kind::kColor, glm::value_ptr(r.secondary), 4); return true;
     case GL_CURRENT_RASTER_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(r.texcoord), 4); return true;
     case GL_CURRENT_RASTER_DISTANCE: out = make(Kind::kFloat, {r.distance}); return true;
     case GL_CURRENT_RASTER_INDEX: out = make(Kind::kFloat, {r.index}); return true;
@@ -269,6 +282,12 @@ bool query_prims(const GlContext& c, GLenum pname, Values& out) {
       return true;
     case GL_POINT_SIZE_GRANULARITY:
       out = make(Kind::kFloat, {kSizeGranularity});
+      return true;
+    case GL_POINT_SIZE_MIN: out = make(Kind::kFloat, {p.point_min}); return true;
+    case GL_POINT_SIZE_MAX: out = make(Kind::kFloat, {p.point_max}); return true;
+    case GL_POINT_FADE_THRESHOLD_SIZE: out = make(Kind::kFloat, {p.point_fade}); return true;
+    case GL_POINT_DISTANCE_ATTENUATION:
+      out = make(Kind::kFloat, {p.point_attenuation.x, p.point_attenuation.y, p.point_attenuation.z});
       return true;
     case GL_LINE_WIDTH:
       out = make(Kind::kFloat, {p.line_width});
@@ -354,6 +373,8 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
     case GL_INDEX_ARRAY_POINTER: p = a.index.pointer; break;
     case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
     case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: p = a.secondary_color.pointer; break;
+    case GL_FOG_COORD_ARRAY_POINTER: p = a.fog_coord.pointer; break;
     case GL_FEEDBACK_BUFFER_POINTER: p = c.feedback.buffer; break;
     case GL_SELECTION_BUFFER_POINTER: p = c.selection.buffer; break;
     default: return c.set_error(GL_INVALID_ENUM);

@@ -65,9 +65,9 @@ glm::vec3 eye_normal(const GlContext& c, const glm::mat4& modelview) {
 // 2.13.6), or the current colour as it is, as Mesa keeps it.
 void set_color(GlContext& c, const glm::vec4& eye, const glm::mat4& modelview) {
   RasterPosition& r = c.raster_pos;
-  if (!c.lighting.enabled) {
+  if (!c.lighting.enabled) {  // the current colours as they are (GL 1.4: the secondary too)
     r.color = c.current.color;
-    r.secondary = glm::vec4(0.0f);
+    r.secondary = c.current.secondary;
     return;
   }
   std::vector<Light> lights;
@@ -95,7 +95,9 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   }
   r.valid = true;
   r.window = glm::vec4(window_of(c.raster.viewport, clip), clip.w);
-  r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  // GL 1.4 section 2.12: the fog coordinate, or the eye distance (Mesa's choice of distance).
+  r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
+                                                        : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
   r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
   select_raster_position(c);

@@ -30,6 +30,7 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_INDEX_LOGIC_OP: return &c.raster.index_logic_op;  // = GL 1.0's GL_LOGIC_OP
     case GL_POLYGON_STIPPLE: return &c.raster.polygon_stipple;
     case GL_FOG: return &c.fog.enabled;
+    case GL_COLOR_SUM: return &c.fog.color_sum;
     case GL_TEXTURE_1D: return &c.textures.enabled_1d;
     case GL_TEXTURE_2D: return &c.textures.enabled_2d;
     case GL_TEXTURE_GEN_S: return &c.textures.gen[0].enabled;
@@ -54,6 +55,8 @@ bool* client_capability_flag(GlContext& c, GLenum cap) {
     case GL_TEXTURE_COORD_ARRAY: return &c.arrays.texcoord.enabled;
     case GL_INDEX_ARRAY: return &c.arrays.index.enabled;
     case GL_EDGE_FLAG_ARRAY: return &c.arrays.edge_flag.enabled;
+    case GL_SECONDARY_COLOR_ARRAY: return &c.arrays.secondary_color.enabled;
+    case GL_FOG_COORD_ARRAY: return &c.arrays.fog_coord.enabled;
     default: return nullptr;
   }
 }

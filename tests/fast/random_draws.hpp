@@ -274,6 +274,13 @@ class RandomDraws {
     FragmentState& f = d.frag;
     f.line = {prim_size(), chance(0.2), chance(0.3), std::uint16_t(integer(0, 0xffff)), std::uint16_t(integer(1, 4))};
     f.point = {prim_size(), chance(0.2)};
+    if (chance(0.3)) {  // GL 1.4's distance attenuation: a size per point from its eye distance
+      f.point.attenuation = {uniform(0.0f, 2.0f), chance(0.5) ? uniform(0.0f, 0.5f) : 0.0f, uniform(0.0f, 0.3f)};
+      if (chance(0.1)) f.point.attenuation = {0.0f, 0.0f, 0.0f};  // infinite sizes, clamped
+      f.point.size = uniform(1, 40);
+      f.point.min_size = chance(0.5) ? 1.0f : uniform(0.0f, 6.0f);
+      f.point.max_size = chance(0.5) ? 255.0f : uniform(2.0f, 30.0f);
+    }
     if (unfilled) {
       f.front_mode = PolygonMode(integer(0, 2));
       f.back_mode = PolygonMode(integer(0, 2));
