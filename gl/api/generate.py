@@ -46,6 +46,25 @@ class Tables:
         self.implemented = [c for c in self.api.commands if c.name not in self.pending]
         self.begin_end = [re.compile(p) for p in cfg["begin_end"]["allowed"]]
         self.not_compiled = [re.compile(p) for p in cfg["display_list"]["not_compiled"]]
+        self.extensions = cfg.get("extensions", {}).get("names", [])
+        self.aliases = self.extension_aliases()
+
+    def extension_aliases(self) -> dict[str, registry.Command]:
+        """The listed extensions' commands, each with the implemented core command it names."""
+        implemented = {c.name: c for c in self.implemented}
+        out: dict[str, registry.Command] = {}
+        for x in self.extensions:
+            if x not in self.api.extensions:
+                raise SystemExit(f"generate: config.toml: {x} is not an extension of the registry")
+            for name in self.api.extensions[x].commands:
+                core = self.api.aliases.get(name, name)
+                if core not in implemented:
+                    why = "is pending" if core in self.pending else "is not a command of the configured features"
+                    raise SystemExit(f"generate: config.toml: {x} is listed, but its command {name} "
+                                     f"({core}) {why}")
+                if name != core:
+                    out[name] = implemented[core]
+        return out
 
     def allowed_in_begin_end(self, c: registry.Command) -> bool:
         return any(p.fullmatch(c.short) for p in self.begin_end)
@@ -67,7 +86,10 @@ class Tables:
 
     def exported(self) -> list[str]:
         names = [c.name for c in self.implemented] + self.config["extra_procs"]["names"]
-        return sorted(names)
+        return sorted(names + list(self.aliases))
+
+    def extensions_string(self) -> str:
+        return "".join(f"{x} " for x in self.extensions)
 
 
 def read_pending(path: Path, known: set[str]) -> set[str]:
@@ -94,8 +116,9 @@ def gl_h(t: Tables) -> str:
     api = t.api
     features = ", ".join(n for n, _ in api.features)
     out = [f"""/* shadelab's own <GL/gl.h>: the types, enums and command prototypes of {features}
- * (and the GL 1.2 enums of the GL 1.1 extensions libshadelab-gl implements), with the ABI's
- * values and signatures, so that a program builds against this header or Mesa's unchanged.
+ * (and, for the versions after 1.1, the PFNGL...PROC types <GL/glext.h> would declare), with
+ * the ABI's values and signatures, so that a program builds against this header or Mesa's
+ * unchanged.
  * Commands listed in docs/gl-coverage.md as pending are declared but not yet exported.
  * {GENERATED} */
 #ifndef __gl_h_
@@ -131,6 +154,11 @@ extern "C" {{
     out += [f"#define {name} {value}" for name, value in api.enums]
     out.append("")
     out += [f"GLAPI {c.ret} GLAPIENTRY {c.name}({c.param_list()});" for c in api.commands]
+    # <GL/glext.h> declares the function-pointer types of a version only when the version's
+    # macro is undefined; this header defines the macros, so it declares the types as well.
+    out.append("")
+    out += [f"typedef {c.ret} (APIENTRYP PFN{c.name.upper()}PROC)({c.param_list()});"
+            for c in api.commands if c.version not in ("1.0", "1.1")]
     out.append("""
 #ifdef __cplusplus
 }
@@ -229,6 +257,8 @@ def compile_function(c: registry.Command) -> str:
 
 def entry_points_cpp(t: Tables) -> str:
     body = "\n\n".join(entry_point(t, c) for c in t.implemented)
+    aliases = "\n".join(f'GLAPI {c.ret} GLAPIENTRY {name}({c.param_list()}) __attribute__((alias("{c.name}")));'
+                        for name, c in sorted(t.aliases.items()))
     compiles = "\n\n".join(compile_function(c) for c in t.implemented if t.compiled_into_lists(c))
     return f"""// The exported OpenGL entry points: each finds the thread's current context (none: the call
 // does nothing and returns 0); while a display list is compiled, a command GL 1.1 section
@@ -252,6 +282,9 @@ extern "C" {{
 
 {body}
 
+// The listed extensions' commands (config.toml): the core commands under their suffixed names.
+{aliases}
+
 }}  // extern "C"
 """
 
@@ -259,7 +292,8 @@ extern "C" {{
 # ---- proc_table.cpp, version.hpp ----
 
 def proc_table_cpp(t: Tables) -> str:
-    rows = "\n".join(f'    {{"{n}", reinterpret_cast<Proc>(&{n})}},' for n in t.exported())
+    rows = "\n".join(f'    {{"{n}", reinterpret_cast<Proc>(&{t.aliases[n].name if n in t.aliases else n})}},'
+                     for n in t.exported())
     header = t.config["extra_procs"]["header"]
     return f"""// find_proc: every entry point libshadelab-gl exports, by name, sorted for a binary search.
 // {GENERATED}
@@ -309,6 +343,9 @@ def version_hpp(t: Tables) -> str:
 #pragma once
 
 #define SHADELAB_GL_VERSION_NUMBER "{t.version()}"
+
+// glGetString(GL_EXTENSIONS): config.toml's extensions, each followed by a space.
+#define SHADELAB_GL_EXTENSIONS "{t.extensions_string()}"
 """
 
 
@@ -351,7 +388,8 @@ conformance programs (tests/gl-conformance/programs/) that call it. Generated: r
 
 Totals: {n} commands, {n - len(t.pending)} implemented, {len(t.pending)} pending
 ({'; '.join(totals)}); {called} called by at least one of the {len(calls)} conformance
-programs. glGetString(GL_VERSION) reports {t.version()}.
+programs. glGetString(GL_VERSION) reports {t.version()}; GL_EXTENSIONS lists
+{', '.join(f"`{x}`" for x in t.extensions)}{" (their suffixed commands resolve to the core ones: " + ", ".join(f"`{a}`" for a in sorted(t.aliases)) + ")" if t.aliases else ""}.
 
 | command | version | status | conformance programs |
 | --- | --- | --- | --- |

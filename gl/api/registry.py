@@ -47,11 +47,19 @@ class Command:
 
 
 @dataclass
+class Extension:
+    name: str  # "GL_ARB_multitexture"
+    commands: list[str]  # its commands, suffixed: "glActiveTextureARB"
+
+
+@dataclass
 class Api:
     commands: list[Command]  # in the registry's feature order
     enums: list[tuple[str, str]]  # (name, value), feature order, then the extra enums
     typedefs: list[str]  # C typedef lines, in the registry's order
     features: list[tuple[str, str]] = field(default_factory=list)  # (name, number)
+    aliases: dict[str, str] = field(default_factory=dict)  # extension command -> core command
+    extensions: dict[str, Extension] = field(default_factory=dict)  # every gl extension, by name
 
     def command(self, name: str) -> Command:
         for c in self.commands:
@@ -90,8 +98,11 @@ def load(path: str, features: list[str], extra_enums: list[str], khronos: dict[s
         raise SystemExit(f"generate: {path}: no feature {', '.join(missing)}")
 
     protos = {}
+    aliases = {}
     for c in root.find("commands").findall("command"):
         ret, name = _split_declaration(c.find("proto"))
+        if c.find("alias") is not None:
+            aliases[name] = c.find("alias").get("name")
         params = []
         for p in c.findall("param"):
             ctype, pname = _split_declaration(p)
@@ -105,6 +116,13 @@ def load(path: str, features: list[str], extra_enums: list[str], khronos: dict[s
                 values.setdefault(e.get("name"), e.get("value"))
 
     api = Api([], [], [])
+    api.aliases = aliases
+    for x in root.find("extensions").findall("extension"):
+        if "gl" not in (x.get("supported") or "").split("|"):
+            continue
+        cmds = [c.get("name") for req in x.findall("require") if req.get("api") in (None, "gl")
+                for c in req.findall("command")]
+        api.extensions[x.get("name")] = Extension(x.get("name"), cmds)
     wanted_types = set()
     for fname in features:
         number, cmds, enums, types = by_feature[fname]
@@ -114,7 +132,8 @@ def load(path: str, features: list[str], extra_enums: list[str], khronos: dict[s
             api.commands.append(Command(name, ret, params, fname, number))
         api.enums += [(e, values[e]) for e in enums]
         wanted_types.update(types)
-    api.enums += [(e, values[e]) for e in extra_enums]
+    defined = {e for e, _ in api.enums}
+    api.enums += [(e, values[e]) for e in extra_enums if e not in defined]
 
     used = set()
     for c in api.commands:

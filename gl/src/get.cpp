@@ -362,14 +362,13 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
 }
 
 // GL_VERSION is that of the newest OpenGL version whose every command is implemented
-// (gl/api/pending.txt; SHADELAB_GL_VERSION_NUMBER is generated from it).
+// (gl/api/pending.txt; SHADELAB_GL_VERSION_NUMBER is generated from it); GL_EXTENSIONS lists
+// gl/api/config.toml's extensions.
 const GLubyte* exec::GetString(GlContext& c, GLenum name) {
   static const char* const kVendor = "shadelab";
   static const char* const kRenderer = "shadelab software rasterizer (OpenGL 1.1 fixed function)";
   static const char* const kVersion = SHADELAB_GL_VERSION_NUMBER " shadelab " SHADELAB_VERSION;
-  static const char* const kExtensions =
-      "GL_EXT_bgra GL_EXT_rescale_normal GL_EXT_separate_specular_color "
-      "GL_SGIS_texture_edge_clamp GL_ARB_texture_non_power_of_two ";  // a space after each, as Mesa's
+  static const char* const kExtensions = SHADELAB_GL_EXTENSIONS;  // gl/api/config.toml
   const char* result = nullptr;
   switch (name) {
     case GL_VENDOR: result = kVendor; break;
