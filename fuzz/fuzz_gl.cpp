@@ -85,6 +85,12 @@ class Input {
         GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
         GL_FOG_COORD_ARRAY, GL_FOG_COORD_SRC, GL_FOG_COORD, GL_FRAGMENT_DEPTH, GL_CURRENT_FOG_COORD,
         GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION,
+        // GL 1.4's blending and stencil, GL 1.5's occlusion queries.
+        GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX, GL_CONSTANT_COLOR,
+        GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_COLOR,
+        GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
+        GL_INCR_WRAP, GL_DECR_WRAP, GL_SAMPLES_PASSED, GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE,
+        GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -201,7 +207,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 21: glOrtho(in.number(), in.number(), in.number(), in.number(), in.number(), in.number()); break;
       case 22: glViewport(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;
       case 23: glClear(GLbitfield(in.byte()) << 8 | in.byte()); break;
-      case 24: glBlendFunc(in.any_enum(), in.any_enum()); break;
+      case 24:  // blending (GL 1.4) and occlusion queries (GL 1.5), names 0 to 4
+        switch (in.byte() % 8) {
+          case 0: glBlendFunc(in.any_enum(), in.any_enum()); break;
+          case 1: glBlendFuncSeparate(in.any_enum(), in.any_enum(), in.any_enum(), in.any_enum()); break;
+          case 2: glBlendEquation(in.any_enum()); break;
+          case 3: glBlendColor(in.number(), in.number(), in.number(), in.number()); break;
+          case 4: {
+            GLuint names[4] = {GLuint(in.small(0, 4)), GLuint(in.small(0, 4)), 0, 1};
+            if (in.byte() % 2) glGenQueries(in.small(-1, 4), names);
+            else glDeleteQueries(in.small(-1, 4), names);
+            break;
+          }
+          case 5: glBeginQuery(in.any_enum(), GLuint(in.small(0, 4))); break;
+          case 6: glEndQuery(in.any_enum()); break;
+          default:
+            (void)glIsQuery(GLuint(in.small(0, 4)));
+            glGetQueryiv(in.any_enum(), in.any_enum(), reinterpret_cast<GLint*>(b->out));
+            glGetQueryObjectiv(GLuint(in.small(0, 4)), in.any_enum(), reinterpret_cast<GLint*>(b->out));
+            glGetQueryObjectuiv(GLuint(in.small(0, 4)), in.any_enum(), reinterpret_cast<GLuint*>(b->out));
+            break;
+        }
+        break;
       case 25: glDepthFunc(in.any_enum()); break;
       case 26: glStencilFunc(in.any_enum(), in.small(-2, 300), GLuint(in.byte())); break;
       case 27: glStencilOp(in.any_enum(), in.any_enum(), in.any_enum()); break;

@@ -159,7 +159,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.secondary_colors = m.secondary;
   in.fog_coords = m.fog;
   in.triangles = triangles;
-  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
   // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
   const Viewport& vp = c.raster.viewport;

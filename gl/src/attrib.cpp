@@ -146,6 +146,10 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.blend = s.blend;
   d.blend_src = s.blend_src;
   d.blend_dst = s.blend_dst;
+  d.blend_src_alpha = s.blend_src_alpha;
+  d.blend_dst_alpha = s.blend_dst_alpha;
+  d.blend_equation = s.blend_equation;
+  d.blend_color = s.blend_color;
   d.dither = s.dither;
   d.alpha_test = s.alpha_test;
   d.alpha_func = s.alpha_func;

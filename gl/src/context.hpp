@@ -3,7 +3,7 @@
 // rule; the exec:: functions of the GL commands change it, draw.cpp hands primitives to the
 // core pipeline. The larger features keep their state in their own headers, included here
 // (texture_state.hpp, vertex_state.hpp, pixel_state.hpp, dlist_state.hpp, eval_state.hpp,
-// feedback_state.hpp).
+// feedback_state.hpp, query_state.hpp).
 // No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
 #pragma once
 
@@ -28,6 +28,7 @@
 #include "gl/src/eval_state.hpp"
 #include "gl/src/feedback_state.hpp"
 #include "gl/src/pixel_state.hpp"
+#include "gl/src/query_state.hpp"
 #include "gl/src/texture_state.hpp"
 #include "gl/src/vertex_state.hpp"
 #include "shadelab/detail/default_init.hpp"
@@ -92,7 +93,12 @@ struct RasterState {
   GLenum depth_func = GL_LESS;
   bool depth_mask = true;
   bool blend = false;
-  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // the colour factors (GL_BLEND_SRC_RGB, ...)
+  // GL 1.4 (section 4.1.7): glBlendFuncSeparate's alpha factors, glBlendEquation, and
+  // glBlendColor's constant, clamped to [0, 1] when given.
+  GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
+  GLenum blend_equation = GL_FUNC_ADD;
+  glm::vec4 blend_color{0.0f};
   bool cull = false;
   GLenum cull_mode = GL_BACK;
   GLenum front_face = GL_CCW;
@@ -310,6 +316,7 @@ struct GlContext {
   GLenum render_mode = GL_RENDER;  // glRenderMode (feedback.cpp)
   SelectionState selection;
   FeedbackState feedback;
+  QueryState queries;  // glBeginQuery (queryobj.cpp)
   RenderModeObserver render_mode_observer{*this};
   std::vector<AttribRecord> attrib_stack;              // glPushAttrib
   std::vector<ClientAttribRecord> client_attrib_stack;  // glPushClientAttrib

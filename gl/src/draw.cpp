@@ -291,7 +291,7 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     return;
   }
   make_pipeline(c);
-  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
   if (c.pipeline) mark_drawn(c);
   else

@@ -143,8 +143,14 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_DEPTH_CLEAR_VALUE: out = make(Kind::kColor, {r.clear_depth}); return true;
     case GL_COLOR_CLEAR_VALUE: out = vec(Kind::kColor, glm::value_ptr(r.clear_color), 4); return true;
     case GL_COLOR_WRITEMASK: out = make(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])}); return true;
-    case GL_BLEND_SRC: out = ints({double(r.blend_src)}); return true;
+    case GL_BLEND_SRC: out = ints({double(r.blend_src)}); return true;  // the colour's (GL 1.4)
     case GL_BLEND_DST: out = ints({double(r.blend_dst)}); return true;
+    case GL_BLEND_SRC_RGB: out = ints({double(r.blend_src)}); return true;
+    case GL_BLEND_DST_RGB: out = ints({double(r.blend_dst)}); return true;
+    case GL_BLEND_SRC_ALPHA: out = ints({double(r.blend_src_alpha)}); return true;
+    case GL_BLEND_DST_ALPHA: out = ints({double(r.blend_dst_alpha)}); return true;
+    case GL_BLEND_EQUATION: out = ints({double(r.blend_equation)}); return true;
+    case GL_BLEND_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.blend_color), 4); return true;
     case GL_CULL_FACE_MODE: out = ints({double(r.cull_mode)}); return true;
     case GL_FRONT_FACE: out = ints({double(r.front_face)}); return true;
     case GL_STENCIL_FUNC: out = ints({double(r.stencil_func)}); return true;

@@ -18,7 +18,9 @@
 namespace shadelab {
 
 enum class CompareFunc { kNever, kLess, kEqual, kLequal, kGreater, kNotequal, kGequal, kAlways };
-enum class StencilOp { kKeep, kZero, kReplace, kIncr, kDecr, kInvert };
+/// glStencilOp's operations: GL 1.1's (kIncr and kDecr clamp to [0, 255]), then GL 1.4's
+/// kIncrWrap and kDecrWrap, which wrap around modulo 256.
+enum class StencilOp { kKeep, kZero, kReplace, kIncr, kDecr, kInvert, kIncrWrap, kDecrWrap };
 
 /// glStencilFunc / glStencilOp / glStencilMask.
 struct StencilState {

@@ -74,7 +74,8 @@ struct VaryingLayout {
 /// or logic op): the depth test kLess or kLequal writing
 /// depth, every colour channel written, flat or Gouraud colours, and the colour either
 /// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
-/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with GL_FUNC_ADD,
+/// BlendState::source_over).
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
 
 /// How a textured draw samples, decided once per draw (plan.cpp) for the SIMD samplers
@@ -117,6 +118,7 @@ struct DrawPlan {
   /// alpha test's alpha, or every channel for the logic op.
   bool exact_colors = false;
   float alpha_ref = 0.0f;        ///< the reference as an 8-bit value (detail::alpha_test)
+  float blend_constant[4] = {};  ///< glBlendColor's, in 8 bits (detail::blend_constant)
   /// Lanes of each block masked by the scissor box and the polygon stipple (raster-inl.h, kept_lanes).
   bool lane_masks = false;
   /// The pixels a draw may write: the framebuffer, cut by the scissor box (inclusive bounds;

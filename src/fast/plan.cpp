@@ -48,7 +48,7 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
     return BlockKernel::kGeneral;
   }
   if (!f.blend.enabled) return less ? BlockKernel::kOpaqueLess : BlockKernel::kOpaqueLequal;
-  if (f.blend.src == BlendFactor::kSrcAlpha && f.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
+  if (f.blend.source_over()) {
     return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
   }
   return BlockKernel::kGeneral;
@@ -131,6 +131,8 @@ void make_plan(DrawJob& job) {
   p.alpha_test = frag.alpha_test.enabled;
   p.alpha_ref = float(detail::unorm8(frag.alpha_test.ref));
   p.exact_colors = p.alpha_test || frag.logic_op.enabled;
+  const glm::vec4 constant = detail::blend_constant(frag.blend);
+  for (int c = 0; c < 4; ++c) p.blend_constant[c] = constant[c];
   pixel_box(*job.fb, frag, p);
   const VertexInput& in = *job.in;
   const bool unfilled = detail::PrimAssembler::unfilled(frag);
