@@ -79,6 +79,11 @@ class Input {
         GL_EYE_PLANE, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q, GL_INTENSITY, GL_RGB5_A1, GL_RGBA16,
         GL_R3_G3_B2, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_WIDTH, GL_TEXTURE_BORDER,
         GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
+        // GL 1.2-1.4 texture state: wrap modes, LOD clamps and bias, level range, generation.
+        GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_TEXTURE_WRAP_R,
+        GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
+        GL_TEXTURE_LOD_BIAS, GL_TEXTURE_FILTER_CONTROL, GL_MAX_TEXTURE_LOD_BIAS, GL_GENERATE_MIPMAP,
+        GL_GENERATE_MIPMAP_HINT,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -219,6 +224,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                      in.small(-1, kMaxImage), in.small(0, 1), in.any_enum(), in.any_enum(), b->pixels);
         glTexParameteri(GL_TEXTURE_2D, in.any_enum(), GLint(in.any_enum()));
         glTexEnvi(in.any_enum(), in.any_enum(), GLint(in.any_enum()));
+        // Numeric parameters (LOD clamps and biases, levels), a mipmap generation hint.
+        glTexParameterf(GL_TEXTURE_2D, in.any_enum(), in.byte() % 2 ? in.number() : float(in.small(-2, 20)));
+        glTexEnvf(in.any_enum(), in.any_enum(), in.number());
+        glHint(in.any_enum(), in.any_enum());
         if (in.byte() % 4 == 0) glDeleteTextures(1, &name);
         break;
       }

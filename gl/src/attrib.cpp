@@ -30,11 +30,14 @@ constexpr GLenum kCapabilities[] = {
     GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
 };
 
-// The parameters of a texture object that the texture group holds (table 6.15), nine floats.
-constexpr GLenum kTextureParameters[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
-                                         GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
-                                         GL_TEXTURE_PRIORITY,   GL_TEXTURE_BORDER_COLOR};
-constexpr std::size_t kTextureParameterFloats = 9;
+// The parameters of a texture object that the texture group holds (GL 1.5 table 6.19),
+// sixteen floats.
+constexpr GLenum kTextureParameters[] = {
+    GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,  GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
+    GL_TEXTURE_WRAP_R,     GL_TEXTURE_PRIORITY,    GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_MIN_LOD,
+    GL_TEXTURE_MAX_LOD,    GL_TEXTURE_BASE_LEVEL,  GL_TEXTURE_MAX_LEVEL,  GL_TEXTURE_LOD_BIAS,
+    GL_GENERATE_MIPMAP};
+constexpr std::size_t kTextureParameterFloats = 16;
 
 // Runs a GL command for its effect on state the stack saves, leaving the error flag as it was:
 // true if the command raised no error (a texture target not implemented raises one).
@@ -48,7 +51,7 @@ bool quietly(GlContext& c, F&& f) {
   return ok;
 }
 
-void read_texture_parameters(GlContext& c, GLenum target, std::array<float, 9>& out) {
+void read_texture_parameters(GlContext& c, GLenum target, std::array<float, kTextureParameterFloats>& out) {
   std::size_t k = 0;
   for (GLenum pname : kTextureParameters) {
     exec::GetTexParameterfv(c, target, pname, &out[k]);
@@ -56,7 +59,7 @@ void read_texture_parameters(GlContext& c, GLenum target, std::array<float, 9>& 
   }
 }
 
-void write_texture_parameters(GlContext& c, GLenum target, const std::array<float, 9>& in) {
+void write_texture_parameters(GlContext& c, GLenum target, const std::array<float, kTextureParameterFloats>& in) {
   std::size_t k = 0;
   for (GLenum pname : kTextureParameters) {
     exec::TexParameterfv(c, target, pname, &in[k]);
@@ -122,6 +125,7 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
   }
   c.textures.env_mode = r.textures.env_mode;
   c.textures.env_color = r.textures.env_color;
+  c.textures.lod_bias = r.textures.lod_bias;
   // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
   // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
   for (std::size_t i = 0; i < c.textures.gen.size(); ++i) {

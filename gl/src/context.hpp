@@ -232,10 +232,10 @@ struct AttribRecord {
   struct TextureTarget {
     GLenum target = 0;
     GLuint name = 0;
-    std::array<float, 9> bound{}, defaults{};
+    std::array<float, 16> bound{}, defaults{};  // attrib.cpp's kTextureParameters
   };
   std::vector<TextureTarget> texture_targets;
-  std::array<GLenum, 5> hints{};
+  std::array<GLenum, 6> hints{};
   GLenum matrix_mode = GL_MODELVIEW;
   GLuint list_base = 0;
   RasterPosition raster_pos;  // current group (table 6.5)
@@ -298,8 +298,9 @@ struct GlContext {
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;
-  std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
-                              GL_DONT_CARE};
+  // glHint, by state.cpp's hint_slot: the GL 1.1 hints, then GL_GENERATE_MIPMAP_HINT (1.4).
+  std::array<GLenum, 6> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+                              GL_DONT_CARE, GL_DONT_CARE};
 
   GLenum matrix_mode = GL_MODELVIEW;
   MatrixStack modelview{{glm::mat4(1.0f)}, kMaxModelviewDepth};

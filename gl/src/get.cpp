@@ -239,6 +239,8 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
+    case GL_GENERATE_MIPMAP_HINT: out = ints({double(c.hints[5])}); return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = make(Kind::kFloat, {kMaxTextureLodBias}); return true;
     case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({kMaxEvalOrder}); return true;
     case GL_MAP1_GRID_DOMAIN: out = make(Kind::kFloat, {c.eval.attribs.grid1_u1, c.eval.attribs.grid1_u2}); return true;

@@ -82,6 +82,7 @@ int hint_slot(GLenum target) {
     case GL_LINE_SMOOTH_HINT: return 2;
     case GL_POLYGON_SMOOTH_HINT: return 3;
     case GL_FOG_HINT: return 4;
+    case GL_GENERATE_MIPMAP_HINT: return 5;  // GL 1.4: accepted, changes nothing (as Mesa)
     default: return -1;
   }
 }

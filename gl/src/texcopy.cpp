@@ -75,6 +75,7 @@ void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum i
   texture_changing(c, t);
   define_level(t, level, GLint(internal), inner_w, inner_h);
   store_inside(image, inside, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 // glCopyTexSubImage1D (dims 1) and glCopyTexSubImage2D.
@@ -96,6 +97,7 @@ void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLin
   RgbaImage image = read_framebuffer(c, x, y, width, height, inside);
   texture_changing(c, t);
   store_inside(image, inside, xoffset, yoffset, img, t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 }  // namespace

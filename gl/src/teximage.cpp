@@ -99,6 +99,7 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   texture_changing(c, t);
   define_level(t, level, internal, inner_w, inner_h);
   store_texels(image, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 // glTexSubImage1D (dims 1) and glTexSubImage2D.
@@ -119,6 +120,7 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   RgbaImage image = unpack(c, width, 0, 0, width, height, format, type, pixels);
   texture_changing(c, t);
   store_texels(image, x, y, img, t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 // What a display list keeps of a client image (GL 1.1 section 5.4): its pixels as the unpack

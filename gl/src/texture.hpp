@@ -50,6 +50,11 @@ void store_texels(const RgbaImage& image, int x, int y, TexImage& level, Texture
 /// internal format is not one.
 bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height);
 
+/// GL_GENERATE_MIPMAP (GL 1.4, mipmap.cpp): call after level `level` of `t` was specified or
+/// its texels changed; when it is the base level of a texture generating its mipmaps (and
+/// below GL_TEXTURE_MAX_LEVEL), the levels after it are made again from it.
+void level_changed(TextureObject& t, int level);
+
 /// The number of levels a texture of `target` may have (GL_MAX_TEXTURE_SIZE's log2 + 1).
 inline constexpr int max_texture_levels() { return kMaxTextureLevels; }
 

@@ -38,6 +38,7 @@ struct TextureObject {
   Texture texture;
   std::vector<TexImage> images;  // per level
   float priority = 1.0f;
+  bool generate_mipmap = false;  // GL_GENERATE_MIPMAP (GL 1.4): mipmap.cpp
 };
 
 /// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
@@ -70,6 +71,7 @@ struct TextureState {
   std::shared_ptr<TextureNames> names;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
+  float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
   std::array<TexGenCoord, 4> gen;  // s, t, r, q
 
   TextureBinding& binding(GLenum target) { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }

@@ -90,8 +90,10 @@ struct TexturePlan {
   bool mag_linear = false;  ///< GL_LINEAR magnification
   bool min_linear = false;  ///< linear within a level when minified (GL_LINEAR, GL_LINEAR_MIPMAP_*)
   TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
-  float width = 0.0f, height = 0.0f;  ///< level 0's
+  float width = 0.0f, height = 0.0f;  ///< the base level's
+  int base_level = 0;                 ///< Texture::base_level
   int last_level = 0;                 ///< Texture::last_level
+  TextureLod adjust;                  ///< texture_lod: bias and clamps
   float border[4] = {};               ///< the border colour in byte units
   TextureEnvMode env = TextureEnvMode::kModulate;
   TextureFormat format = TextureFormat::kRgba;

@@ -154,7 +154,7 @@ HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const T
           join_rows(df, out[2][0], out[2][kRows - 1]), join_rows(df, out[3][0], out[3][kRows - 1])};
 }
 
-/// texture_rho2: the larger squared length of the x and y differences in level 0's texels.
+/// texture_rho2: the larger squared length of the x and y differences in the base level's texels.
 HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
   const DB db;
   const VB w = hn::Set(db, tp.width), h = hn::Set(db, tp.height);
@@ -199,31 +199,54 @@ HWY_INLINE LevelChoice choose_levels(const TexturePlan& tp, const QuadDerivative
   const DIB di;
   const VB r2 = rho2(tp, d);
   LevelChoice c;
-  c.lo = c.hi = hn::Zero(di);
+  c.lo = c.hi = hn::Set(di, tp.base_level);
   c.frac = hn::Zero(db);
   c.two_levels = false;
   VB lod = hn::Zero(db);
-  if (tp.linear_mip) lod = hn::Mul(hn::Set(db, 0.5f), fast_log2(r2));
-  const MB minified = tp.linear_mip ? hn::Gt(lod, hn::Zero(db)) : hn::Gt(r2, hn::Set(db, 1.0f));
+  MB minified;
+  if (tp.adjust.adjusted) {  // texture.cpp's adjusted_lod
+    lod = hn::Add(hn::Mul(hn::Set(db, 0.5f), fast_log2(r2)), hn::Set(db, tp.adjust.bias));
+    if (tp.adjust.apply_max) lod = hn::Min(lod, hn::Set(db, tp.adjust.max_lod));
+    if (tp.adjust.apply_min) lod = hn::Max(lod, hn::Set(db, tp.adjust.min_lod));
+    lod = hn::Min(hn::Max(lod, hn::Set(db, -128.0f)), hn::Set(db, 64.0f));
+    minified = hn::Gt(lod, hn::Zero(db));
+  } else {
+    if (tp.linear_mip) lod = hn::Mul(hn::Set(db, 0.5f), fast_log2(r2));
+    minified = tp.linear_mip ? hn::Gt(lod, hn::Zero(db)) : hn::Gt(r2, hn::Set(db, 1.0f));
+  }
   c.linear = tp.min_linear == tp.mag_linear ? filter_mask(tp.mag_linear)
                                             : (tp.min_linear ? minified : hn::Not(minified));
   if (!tp.mipmaps) return c;
-  const auto last = hn::Set(di, tp.last_level);
+  const auto base = hn::Set(di, tp.base_level), last = hn::Set(di, tp.last_level);
   const auto minified_i = hn::RebindMask(di, minified);
-  if (!tp.linear_mip) {  // rounded_half_log2: the frexp exponent (biased exponent - 126), halved
-    const auto exponent = hn::And(hn::ShiftRight<23>(hn::BitCast(di, r2)), hn::Set(di, 0xff));
-    const auto half = hn::ShiftRight<1>(hn::Sub(exponent, hn::Set(di, 126)));
-    c.lo = c.hi = hn::IfThenElseZero(minified_i, hn::Min(hn::Max(half, hn::Zero(di)), last));
+  if (!tp.linear_mip) {
+    hn::Vec<DIB> i;
+    if (tp.adjust.adjusted) {  // lp_build_iround: half to even
+      i = hn::NearestInt(lod);
+    } else {  // rounded_half_log2: the frexp exponent (biased exponent - 126), halved
+      const auto exponent = hn::And(hn::ShiftRight<23>(hn::BitCast(di, r2)), hn::Set(di, 0xff));
+      i = hn::ShiftRight<1>(hn::Sub(exponent, hn::Set(di, 126)));
+    }
+    const auto level = hn::Min(hn::Max(hn::Add(base, i), base), last);
+    c.lo = c.hi = hn::IfThenElse(minified_i, level, base);
     return c;
   }
   const VB floor = hn::Floor(lod);
-  const auto level = hn::ConvertTo(di, floor);
+  const auto level = hn::Add(base, hn::ConvertTo(di, floor));
   const auto below_last = hn::And(minified_i, hn::Lt(level, last));
-  c.lo = hn::IfThenElse(below_last, level, hn::IfThenElseZero(minified_i, last));
+  c.lo = hn::IfThenElse(below_last, level, hn::IfThenElse(minified_i, last, base));
   c.hi = hn::IfThenElse(below_last, hn::Add(level, hn::Set(di, 1)), c.lo);
   c.frac = hn::IfThenElseZero(hn::RebindMask(db, below_last), hn::Sub(lod, floor));
   c.two_levels = !hn::AllFalse(di, below_last);
   return c;
+}
+
+/// texture.cpp's mirror: |2 (s/2 - round(s/2))|, rounded half to even.
+HWY_INLINE VB mirror(VB s) {
+  const DB db;
+  const VB h = hn::Mul(s, hn::Set(db, 0.5f));
+  const VB f = hn::Sub(h, hn::Round(h));
+  return hn::Abs(hn::Add(f, f));
 }
 
 /// wrap_coord, times the level's size: where in the level, in texels, a coordinate falls.
@@ -237,12 +260,15 @@ HWY_INLINE VB texel_coord(VB s, int size, TextureWrap wrap) {
       s = hn::Min(hn::Max(s, hn::Set(db, half)), hn::Set(db, 1.0f - half));
       break;
     }
+    case TextureWrap::kClampToBorder: s = hn::Min(hn::Max(s, hn::Set(db, -1.0f)), hn::Set(db, 2.0f)); break;
+    case TextureWrap::kMirroredRepeat: s = mirror(s); break;
   }
   return hn::Mul(s, hn::Set(db, float(size)));
 }
 
-/// wrap_index for indices in [-1, size]: repeat wraps them, clamp-to-edge clamps them, and
-/// GL_CLAMP keeps them, marking those outside [0, size) in `border` (the border colour).
+/// wrap_index for indices in [-1, size] (clamp to border: [-size - 1, 2 size]): repeat wraps
+/// them, clamp-to-edge and mirrored repeat clamp them, and GL_CLAMP and clamp to border keep
+/// them, marking those outside [0, size) in `border` (the border colour).
 HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, hn::Mask<DIB>& border) {
   const DIB di;
   const auto n = hn::Set(di, size);
@@ -250,8 +276,10 @@ HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, h
     case TextureWrap::kRepeat:
       i = hn::IfThenElse(hn::Lt(i, hn::Zero(di)), hn::Add(i, n), i);
       return hn::IfThenElse(hn::Lt(i, n), i, hn::Sub(i, n));
-    case TextureWrap::kClampToEdge: return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, hn::Set(di, 1)));
-    case TextureWrap::kClamp: border = hn::Or(border, hn::Or(hn::Lt(i, hn::Zero(di)), hn::Not(hn::Lt(i, n))));
+    case TextureWrap::kClampToEdge: case TextureWrap::kMirroredRepeat:
+      return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, hn::Set(di, 1)));
+    case TextureWrap::kClamp: case TextureWrap::kClampToBorder:
+      border = hn::Or(border, hn::Or(hn::Lt(i, hn::Zero(di)), hn::Not(hn::Lt(i, n))));
   }
   return i;
 }
@@ -276,9 +304,15 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 /// a + w (b - a), the reference's lerp.
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
+/// texture.cpp's nearest_index: the clamps and mirrored repeat (u >= 0 there) keep a nearest
+/// index in the level; repeat wraps it and clamp to border takes the border outside.
+HWY_INLINE bool keeps_nearest_in_level(TextureWrap w) {
+  return w != TextureWrap::kRepeat && w != TextureWrap::kClampToBorder;
+}
+
 /// One level's filtered texels in byte units (texture.cpp's sample_level): `linear` lanes
-/// blend four texels (two for 1D textures), the others take the nearest; the nearest never
-/// reads the border.
+/// blend four texels (two for 1D textures), the others take the nearest; the nearest reads
+/// the border only with clamp to border.
 HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, MB linear, VB out[4]) {
   const DB db;
   const DIB di;
@@ -290,8 +324,8 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, MB li
   if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
     i = hn::ConvertTo(di, hn::Floor(u));
     j = tp.one_d ? hn::Zero(di) : hn::ConvertTo(di, hn::Floor(v));
-    if (tp.wrap_s != TextureWrap::kRepeat) i = hn::Min(i, hn::Set(di, l.width - 1));
-    if (tp.wrap_t != TextureWrap::kRepeat) j = hn::Min(j, hn::Set(di, l.height - 1));
+    if (keeps_nearest_in_level(tp.wrap_s)) i = hn::Min(i, hn::Set(di, l.width - 1));
+    if (keeps_nearest_in_level(tp.wrap_t)) j = hn::Min(j, hn::Set(di, l.height - 1));
   }
   if (!any_linear) return fetch(tp, l, i, j, out);
   const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
@@ -323,7 +357,7 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, const QuadDeri
   const DB db;
   const DIB di;
   if (!d) {  // one level, one filter for every lane
-    sample_level(tp, 0, s, t, filter_mask(tp.mag_linear), out);
+    sample_level(tp, tp.base_level, s, t, filter_mask(tp.mag_linear), out);
   } else {
     const LevelChoice c = choose_levels(tp, *d);
     const auto live_i = hn::RebindMask(di, live);

@@ -161,7 +161,7 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     // GL 1.1 section 3.8: s / q and t / q per fragment (projective texture coordinates).
     const float q = a[kTexCoord + 3];
     const glm::vec2 st(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q));
-    glm::vec4 texel = sample_texture(t, st, texture_rho2(t, f.texture_derivatives));
+    glm::vec4 texel = sample_texture(t, st, texture_rho2(t, f.texture_derivatives), shade.texture_lod_bias);
     color = apply_texture_env(shade.texture_env, t.format, color, texel, shade.texture_env_color);
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped

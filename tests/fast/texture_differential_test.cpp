@@ -1,6 +1,7 @@
 // Texturing on the fast pipeline's SIMD path against the reference (texture-inl.h against
-// texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode, base
-// format and environment mode, 1D and 2D, mipmapped or not, on floors and walls seen in
+// texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode (mirrored
+// repeat and clamp to border too), base format and environment mode, 1D and 2D, mipmapped or
+// not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
 // perspective (every mipmap level in one picture), orthographically, and with projective
 // coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
@@ -43,9 +44,18 @@ std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d) {
   } else if (pick(0, 3) == 0) {
     generate_mipmaps(*t);
   }
-  t->wrap_s = TextureWrap(pick(0, 2));
-  t->wrap_t = TextureWrap(pick(0, 2));
+  t->wrap_s = TextureWrap(pick(0, 4));
+  t->wrap_t = TextureWrap(pick(0, 4));
   t->format = TextureFormat(pick(0, 5));
+  if (pick(0, 1)) {  // GL 1.2-1.4 level-of-detail state
+    auto real = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+    const int levels = int(t->levels.size());
+    if (pick(0, 2) == 0) t->base_level = pick(0, levels - 1);
+    if (pick(0, 2) == 0) t->max_level = t->base_level + pick(0, 3);
+    if (pick(0, 2) == 0) t->min_lod = pick(0, 1) ? real(-2.0f, 4.0f) : float(pick(0, 3));
+    if (pick(0, 2) == 0) t->max_lod = pick(0, 1) ? real(-1.0f, 6.0f) : float(pick(0, 5));
+    if (pick(0, 2) == 0) t->lod_bias = pick(0, 1) ? real(-4.0f, 4.0f) : float(pick(-2, 2));
+  }
   t->border_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
   return t;
 }
@@ -105,6 +115,7 @@ TexturedScene textured_scene(unsigned seed) {
     d.shade.lighting = false;
     d.shade.texture = d.texture.get();
     d.shade.texture_env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+    if (pick(0, 3) == 0) d.shade.texture_lod_bias = real(-3.0f, 3.0f);
     d.frag.depth_test = pick(0, 1);
     if (scene.exact) {
       d.texture->format = TextureFormat::kRgba;
