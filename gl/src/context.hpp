@@ -46,6 +46,8 @@ inline constexpr int kMaxProjectionDepth = 32;
 inline constexpr int kMaxTextureStackDepth = 10;
 inline constexpr int kMaxTextureSize = 16384;  // as llvmpipe's
 inline constexpr int kMaxTextureLevels = 15;    // levels 0 .. log2(kMaxTextureSize)
+inline constexpr int kMax3dTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE, as llvmpipe's
+inline constexpr int kMax3dTextureLevels = 12;  // levels 0 .. log2(kMax3dTextureSize)
 inline constexpr int kMaxViewportDim = 16384;
 inline constexpr int kMaxBufferDim = 16384;  // OSMESA_MAX_WIDTH / OSMESA_MAX_HEIGHT
 
@@ -165,6 +167,7 @@ struct PrimState {
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
+  GLint image_height = 0, skip_images = 0;  // GL 1.2: 3D images (section 3.6.4)
   bool swap_bytes = false, lsb_first = false;
 };
 

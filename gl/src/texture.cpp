@@ -223,12 +223,12 @@ const Texture* complete_texture(TextureObject& t) {
 }  // namespace
 
 TextureObject* bound_texture(GlContext& c, GLenum target) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return nullptr;
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return nullptr;
   return c.textures.binding(target).object.get();
 }
 
-// GL 1.1 section 3.8.9: the 2D texture when enabled, else the 1D one. Like Mesa, an enabled
-// target whose texture is incomplete gives way to the next enabled one.
+// GL 1.5 section 3.8.15: the 3D texture when enabled, else the 2D one, else the 1D one. Like
+// Mesa, an enabled target whose texture is incomplete gives way to the next enabled one.
 namespace {
 
 TextureEnvMode env_mode(GLenum mode) {
@@ -243,6 +243,10 @@ TextureEnvMode env_mode(GLenum mode) {
 const Texture* active_texture(GlContext& c, std::shared_ptr<const TextureObject>* object) {
   TextureState& s = c.textures;
   const Texture* t = nullptr;
+  if (s.enabled_3d && s.binding_3d.object && (t = complete_texture(*s.binding_3d.object))) {
+    if (object) *object = s.binding_3d.object;
+    return t;
+  }
   if (s.enabled_2d && s.binding_2d.object && (t = complete_texture(*s.binding_2d.object))) {
     if (object) *object = s.binding_2d.object;
     return t;
@@ -296,7 +300,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
   for (GLsizei i = 0; i < n; ++i) {
     if (textures[i] == 0) continue;
     c.textures.names->objects.erase(textures[i]);
-    for (TextureBinding* b : {&c.textures.binding_1d, &c.textures.binding_2d}) {
+    for (TextureBinding* b : {&c.textures.binding_1d, &c.textures.binding_2d, &c.textures.binding_3d}) {
       if (b->name == textures[i]) *b = {0, b->default_object, b->default_object};
     }
   }
@@ -304,7 +308,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
 
 // A name bound to one target cannot be bound to the other: GL_INVALID_OPERATION.
 void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return c.set_error(GL_INVALID_ENUM);
   TextureBinding& b = c.textures.binding(target);
   if (texture == 0) {
     b.name = 0;
@@ -316,7 +320,7 @@ void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
   if (obj->target != 0 && obj->target != target) return c.set_error(GL_INVALID_OPERATION);
   if (obj->target == 0) {
     obj->target = target;
-    obj->texture.dimensions = target == GL_TEXTURE_1D ? 1 : 2;
+    obj->texture.dimensions = texture_dimensions(target);
   }
   b.name = texture;
   b.object = obj;

@@ -1,4 +1,4 @@
-// 1D and 2D textures as OpenGL 1.4 samples them (with llvmpipe's choices where GL leaves one):
+// 1D, 2D and 3D textures as OpenGL 1.4 samples them (with llvmpipe's choices where GL leaves one):
 // RGBA8 mipmap levels, wrap modes with the border colour, nearest/linear filtering with
 // mipmaps, the level of detail of a 2x2 pixel quad with its bias and clamps and the base and
 // maximum levels, and the texture environment (modulate, replace, decal, blend). Sampling
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 namespace shadelab {
@@ -29,17 +30,20 @@ enum class TextureFormat { kAlpha, kLuminance, kLuminanceAlpha, kIntensity, kRgb
 
 struct TextureLevel {
   int width = 0, height = 0;       ///< texels, without a border (1D levels: height 1)
-  std::vector<std::uint8_t> rgba;  ///< row 0 is t = 0 (the first row given to glTexImage2D)
+  /// Row 0 is t = 0 (the first row given to glTexImage2D); a 3D level holds `depth` images
+  /// of `height` rows one after the other, image 0 at r = 0.
+  std::vector<std::uint8_t> rgba;
+  int depth = 1;  ///< images (3D levels; 1 otherwise)
 };
 
 struct Texture {
   std::vector<TextureLevel> levels;  ///< level 0 first
   TextureFormat format = TextureFormat::kRgba;
   /// 1: a 1D texture (GL 1.1 section 3.8.1): only s is used, each level is one row and
-  /// wrap_t is ignored. 2: a 2D texture.
+  /// wrap_t is ignored. 2: a 2D texture. 3: a 3D texture (GL 1.2): s, t and r.
   int dimensions = 2;
   TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
-  /// GL_TEXTURE_WRAP_R (GL 1.2): kept, not sampled by 1D and 2D textures.
+  /// GL_TEXTURE_WRAP_R (GL 1.2): sampled by 3D textures only.
   TextureWrap wrap_r = TextureWrap::kRepeat;
   TextureFilter min_filter = TextureFilter::kNearestMipmapLinear;  ///< GL's default
   TextureFilter mag_filter = TextureFilter::kLinear;
@@ -56,10 +60,10 @@ struct Texture {
 
   /// Complete (GL 1.5 section 3.8.10) when level base_level exists and, if the min filter
   /// uses mipmaps, base_level <= max_level and every level from base_level to last_level()
-  /// is present with halved sizes. Incomplete textures are ignored.
+  /// is present with halved sizes (depth too). Incomplete textures are ignored.
   bool complete() const;
   /// The last level the mipmap filters use: q = min(base_level + log2 of the base level's
-  /// larger side, max_level) (GL 1.5 section 3.8.10), or fewer when fewer levels are present.
+  /// largest side, max_level) (GL 1.5 section 3.8.10), or fewer when fewer levels are present.
   int last_level() const;
 };
 
@@ -96,29 +100,32 @@ float adjusted_lod(float rho2, const TextureLod& lod);
 /// Builds every mipmap level below level 0 by 2x2 box filtering (scene textures).
 void generate_mipmaps(Texture& texture);
 
-/// The differences of a 2x2 pixel quad's texture coordinates (s and t after the division by
-/// q), from its top-left pixel to the pixel beside it (x) and to the one below it (y), as
-/// llvmpipe derives them for every pixel of the quad (lp_build_packed_ddx_ddy_twocoord).
+/// The differences of a 2x2 pixel quad's texture coordinates (s, t and r after the division
+/// by q), from its top-left pixel to the pixel beside it (x) and to the one below it (y), as
+/// llvmpipe derives them for every pixel of the quad (lp_build_packed_ddx_ddy_twocoord; r's
+/// only matter to 3D textures).
 struct TextureDerivatives {
   float ds_dx = 0.0f, dt_dx = 0.0f, ds_dy = 0.0f, dt_dy = 0.0f;
+  float dr_dx = 0.0f, dr_dy = 0.0f;
 };
 
 /// The squared scale factor rho^2 of GL 1.1 section 3.8.5 as llvmpipe computes it (exactly,
 /// in float): the larger of the squared lengths of the x and y differences measured in the
-/// base level's texels. A texture is minified where rho^2 > 1 (without LOD adjustments).
+/// base level's texels ((s^2 + t^2) + r^2 for a 3D texture). A texture is minified where
+/// rho^2 > 1 (without LOD adjustments).
 float texture_rho2(const Texture& texture, const TextureDerivatives& d);
 
-/// The filtered texel colour at (s, t) for a quad whose scale factor is sqrt(rho2), sampled
+/// The filtered texel colour at (s, t, r) (r for 3D textures only) for a quad whose scale factor is sqrt(rho2), sampled
 /// through a texture unit whose GL_TEXTURE_LOD_BIAS is `unit_bias`: level selection as
 /// llvmpipe's (without adjustments, log2 computed as lp_build_fast_log2 for *_MIPMAP_LINEAR,
 /// rounded exactly for *_MIPMAP_NEAREST, magnification wherever rho2 <= 1, that is c = 0 for
 /// every filter pair; with them, lambda from adjusted_lod, rounded half to even for
-/// *_MIPMAP_NEAREST, magnification where lambda <= 0). `st` must be finite (finite_texcoord).
-glm::vec4 sample_texture(const Texture& texture, glm::vec2 st, float rho2, float unit_bias = 0.0f);
+/// *_MIPMAP_NEAREST, magnification where lambda <= 0). `str` must be finite (finite_texcoord).
+glm::vec4 sample_texture(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
 /// sample_texture's texel in byte units (0 to 255), before its one scaling by 1/255: texels
 /// are read as their bytes, filtered by linear interpolations a + w (b - a) (along s, then
-/// t, then between two levels), the border colour taken times 255.
-glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec2 st, float rho2, float unit_bias = 0.0f);
+/// t, then r, then between two levels), the border colour taken times 255.
+glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
 
 /// A texture coordinate the samplers can index with: NaN becomes 0 and magnitudes are kept
 /// below 2^20, so that texel indices never overflow (such coordinates only repeat or clamp).

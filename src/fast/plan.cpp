@@ -62,15 +62,16 @@ TexturePlan texture_plan(const ShadeState& shade) {
   if (!t) return tp;
   tp.texture = t;
   tp.one_d = t->dimensions == 1;
+  tp.three_d = t->dimensions == 3;
   tp.mipmaps = uses_mipmaps(t->min_filter);
   tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.mag_linear = t->mag_filter == TextureFilter::kLinear;
   tp.min_linear = t->min_filter == TextureFilter::kLinear || t->min_filter == TextureFilter::kLinearMipmapNearest ||
                   t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.lod = tp.mipmaps || tp.min_linear != tp.mag_linear;
-  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t;
+  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t, tp.wrap_r = t->wrap_r;
   const TextureLevel& base = t->levels[std::size_t(t->base_level)];
-  tp.width = float(base.width), tp.height = float(base.height);
+  tp.width = float(base.width), tp.height = float(base.height), tp.depth = float(base.depth);
   tp.base_level = t->base_level;
   tp.last_level = t->last_level();
   tp.adjust = texture_lod(*t, shade.texture_lod_bias);

@@ -64,13 +64,15 @@ int nearest_index(float u, int size, TextureWrap wrap) {
   return std::clamp(i, 0, size - 1);
 }
 
-// Texel (i, j) of a level in byte units (0 to 255; the border colour times 255); j is ignored
-// by 1D textures.
-glm::vec4 texel(const TextureLevel& l, int i, int j, const Texture& t) {
+// Texel (i, j, k) of a level in byte units (0 to 255; the border colour times 255); j is
+// ignored by 1D textures, k by 1D and 2D ones.
+glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t) {
   i = wrap_index(i, l.width, t.wrap_s);
   j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, t.wrap_t);
-  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return border_texel(t) * 255.0f;
-  const std::uint8_t* p = &l.rgba[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4];
+  k = t.dimensions < 3 ? 0 : wrap_index(k, l.depth, t.wrap_r);
+  if (i < 0 || j < 0 || k < 0 || i >= l.width || j >= l.height || k >= l.depth) return border_texel(t) * 255.0f;
+  const std::size_t row = std::size_t(k) * std::size_t(l.height) + std::size_t(j);
+  const std::uint8_t* p = &l.rgba[(row * std::size_t(l.width) + std::size_t(i)) * 4];
   return glm::vec4(p[0], p[1], p[2], p[3]);
 }
 
@@ -78,26 +80,35 @@ glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w *
 
 // One level's filtered texel in byte units. The arithmetic, operation by operation, is what
 // the fast pipeline's samplers do on every SIMD target (fast/texture-inl.h): keep them equal.
-glm::vec4 sample_level(const Texture& t, int level, glm::vec2 st, bool linear) {
+glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) {
   const TextureLevel& l = t.levels[std::size_t(level)];
-  const bool one_d = t.dimensions == 1;
-  float u = wrap_coord(st.x, l.width, t.wrap_s) * float(l.width);
-  float v = one_d ? 0.0f : wrap_coord(st.y, l.height, t.wrap_t) * float(l.height);
+  const bool one_d = t.dimensions == 1, three_d = t.dimensions == 3;
+  float u = wrap_coord(str.x, l.width, t.wrap_s) * float(l.width);
+  float v = one_d ? 0.0f : wrap_coord(str.y, l.height, t.wrap_t) * float(l.height);
+  float w = three_d ? wrap_coord(str.z, l.depth, t.wrap_r) * float(l.depth) : 0.0f;
   if (!linear) {  // nearest reads the border only with clamp to border
     const int i = nearest_index(u, l.width, t.wrap_s);
     const int j = one_d ? 0 : nearest_index(v, l.height, t.wrap_t);
-    return texel(l, i, j, t);
+    const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : 0;
+    return texel(l, i, j, k, t);
   }
   float uu = u - 0.5f;
   int i0 = int(std::floor(uu));
   float a = uu - std::floor(uu);
-  if (one_d) return lerp(texel(l, i0, 0, t), texel(l, i0 + 1, 0, t), a);
+  if (one_d) return lerp(texel(l, i0, 0, 0, t), texel(l, i0 + 1, 0, 0, t), a);
   float vv = v - 0.5f;
   int j0 = int(std::floor(vv));
   float b = vv - std::floor(vv);
-  const glm::vec4 top = lerp(texel(l, i0, j0, t), texel(l, i0 + 1, j0, t), a);
-  const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, t), texel(l, i0 + 1, j0 + 1, t), a);
-  return lerp(top, bottom, b);
+  auto slice = [&](int k) {
+    const glm::vec4 top = lerp(texel(l, i0, j0, k, t), texel(l, i0 + 1, j0, k, t), a);
+    const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, k, t), texel(l, i0 + 1, j0 + 1, k, t), a);
+    return lerp(top, bottom, b);
+  };
+  if (!three_d) return slice(0);
+  float ww = w - 0.5f;
+  int k0 = int(std::floor(ww));
+  float c = ww - std::floor(ww);
+  return lerp(slice(k0), slice(k0 + 1), c);
 }
 
 // x = m 2^e with m in [0.5, 1) (frexp); 0, infinities and NaN count as 0 (llvmpipe replaces
@@ -127,30 +138,38 @@ int rounded_half_log2(float x) {
 
 }  // namespace
 
+namespace {
+
+// log2 of a level's largest side (the sides a texture of `dimensions` uses).
+int size_log2(const TextureLevel& l, int dimensions) {
+  int size = std::max({l.width, dimensions == 1 ? 1 : l.height, dimensions == 3 ? l.depth : 1}), n = 0;
+  while (size > 1) size /= 2, ++n;
+  return n;
+}
+
+}  // namespace
+
 int Texture::last_level() const {
   if (base_level < 0 || std::size_t(base_level) >= levels.size()) return base_level;
-  const TextureLevel& b = levels[std::size_t(base_level)];
-  int size = std::max(b.width, dimensions == 1 ? 1 : b.height), n = 0;
-  while (size > 1) size /= 2, ++n;
+  const int n = size_log2(levels[std::size_t(base_level)], dimensions);
   return std::min({base_level + n, max_level, int(levels.size()) - 1});
 }
 
 bool Texture::complete() const {
   if (base_level < 0 || std::size_t(base_level) >= levels.size()) return false;
   const TextureLevel& b = levels[std::size_t(base_level)];
-  if (b.width <= 0 || b.height <= 0) return false;
+  if (b.width <= 0 || b.height <= 0 || b.depth <= 0) return false;
   if (!uses_mipmaps(min_filter)) return true;
   if (max_level < base_level) return false;
-  int size = std::max(b.width, dimensions == 1 ? 1 : b.height), n = 0;
-  while (size > 1) size /= 2, ++n;
-  const int q = std::min(base_level + n, max_level);
-  int w = b.width, h = b.height;
+  const int q = std::min(base_level + size_log2(b, dimensions), max_level);
+  int w = b.width, h = b.height, d = b.depth;
   for (int i = base_level + 1; i <= q; ++i) {
     w = std::max(1, w / 2);
     h = std::max(1, h / 2);
-    if (std::size_t(i) >= levels.size() || levels[std::size_t(i)].width != w || levels[std::size_t(i)].height != h) {
-      return false;
-    }
+    d = std::max(1, d / 2);
+    if (std::size_t(i) >= levels.size()) return false;
+    const TextureLevel& l = levels[std::size_t(i)];
+    if (l.width != w || l.height != h || (dimensions == 3 && l.depth != d)) return false;
   }
   return true;
 }
@@ -236,7 +255,13 @@ float texture_rho2(const Texture& t, const TextureDerivatives& d) {
   const float sx = d.ds_dx * w, sy = d.ds_dy * w;
   if (t.dimensions == 1) return std::max(sx * sx, sy * sy);
   const float tx = d.dt_dx * h, ty = d.dt_dy * h;
-  return std::max(sx * sx + tx * tx, sy * sy + ty * ty);
+  float x2 = sx * sx + tx * tx, y2 = sy * sy + ty * ty;
+  if (t.dimensions == 3) {  // lp_build_rho: the r terms added last
+    const float depth = float(base.depth), rx = d.dr_dx * depth, ry = d.dr_dy * depth;
+    x2 = x2 + rx * rx;
+    y2 = y2 + ry * ry;
+  }
+  return std::max(x2, y2);
 }
 
 float finite_texcoord(float v) {
@@ -248,13 +273,13 @@ float finite_texcoord(float v) {
 // later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR, or with
 // adjustments, where lambda is above 0); levels from the base level on, past the last one
 // clamped.
-glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2, float unit_bias) {
+glm::vec4 sample_texture(const Texture& t, glm::vec3 st, float rho2, float unit_bias) {
   return sample_texture_bytes(t, st, rho2, unit_bias) * (1.0f / 255.0f);
 }
 
 // In byte units; sample_texture scales them by 1/255 (a float product: one rounding of the
 // reciprocal away from the quotient) once at the end.
-glm::vec4 sample_texture_bytes(const Texture& t, glm::vec2 st, float rho2, float unit_bias) {
+glm::vec4 sample_texture_bytes(const Texture& t, glm::vec3 st, float rho2, float unit_bias) {
   const TextureFilter f = t.min_filter;
   const bool linear_mip = f == TextureFilter::kNearestMipmapLinear || f == TextureFilter::kLinearMipmapLinear;
   const TextureLod adjust = texture_lod(t, unit_bias);

@@ -21,7 +21,7 @@ Texture two_by_two(TextureFilter filter, TextureWrap wrap) {
 
 // rho2: the squared scale factor (0.25: magnified twice).
 float red_at(const Texture& t, float s, float tt, float rho2 = 0.25f) {
-  return sample_texture(t, {s, tt}, rho2).r * 255.0f;
+  return sample_texture(t, {s, tt, 0.0f}, rho2).r * 255.0f;
 }
 
 TEST(Texture, NearestPicksTheTexelContainingThePoint) {
@@ -51,12 +51,12 @@ TEST(Texture, RepeatWrapsAcrossTheEdgeWhenFiltering) {
 TEST(Texture, ClampBlendsWithTheBorderColour) {
   Texture t = two_by_two(TextureFilter::kLinear, TextureWrap::kClamp);
   // s = 0: half the border (by default (0, 0, 0, 0)) and half texel 0 -> alpha 0.5.
-  EXPECT_NEAR(sample_texture(t, {0.0f, 0.25f}, 0.25f).a, 0.5f, 1e-6);
+  EXPECT_NEAR(sample_texture(t, {0.0f, 0.25f, 0.0f}, 0.25f).a, 0.5f, 1e-6);
   t.border_color = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
   // Red: half of 255 (border) and half of 0 (texel 0).
   EXPECT_NEAR(red_at(t, 0.0f, 0.25f), 127.5f, 1e-3);
   Texture e = two_by_two(TextureFilter::kLinear, TextureWrap::kClampToEdge);
-  EXPECT_NEAR(sample_texture(e, {0.0f, 0.25f}, 0.25f).a, 1.0f, 1e-6);
+  EXPECT_NEAR(sample_texture(e, {0.0f, 0.25f, 0.0f}, 0.25f).a, 1.0f, 1e-6);
 }
 
 TEST(Texture, OneDimensionalTexturesIgnoreT) {
@@ -159,7 +159,7 @@ TEST(Texture, ClampToBorderTakesTheBorderColourOutside) {
   EXPECT_NEAR(red_at(t, 1.01f, 0.5f), 255.0f, 1e-3);  // nearest reads the border, unlike GL_CLAMP
   EXPECT_NEAR(red_at(t, -0.01f, 0.5f), 255.0f, 1e-3);
   EXPECT_NEAR(red_at(t, 1e6f, 0.5f), 255.0f, 1e-3);
-  EXPECT_NEAR(sample_texture(t, {-3.0f, 0.5f}, 0.25f).a, 0.5f, 1e-6);
+  EXPECT_NEAR(sample_texture(t, {-3.0f, 0.5f, 0.0f}, 0.25f).a, 0.5f, 1e-6);
   // Linear: at s = 1 half the last texel and half the border; inside the texels alone.
   Texture l = four_wide(TextureFilter::kLinear, TextureWrap::kClampToBorder);
   l.border_color = glm::vec4(1.0f);
@@ -227,9 +227,9 @@ TEST(Texture, LodBiasAndClampsMoveTheLevel) {
   EXPECT_TRUE(texture_lod(t, 0.0f).adjusted);
   EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 120, 1e-3);
   // The unit's bias adds to it: 1 + 1 = 2.
-  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f}, 1.0f, 1.0f).r * 255.0f, 240, 1e-3);
+  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f, 0.0f}, 1.0f, 1.0f).r * 255.0f, 240, 1e-3);
   // -1 + 1: back to lambda 0, magnified.
-  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f}, 1.0f, -1.0f).r * 255.0f, 40, 1e-3);
+  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f, 0.0f}, 1.0f, -1.0f).r * 255.0f, 40, 1e-3);
   // Adjusted lambdas round half to even: lambda 0.5 (rho2 = 1, bias 0.5) stays at level 0.
   t.lod_bias = 0.5f;
   EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 40, 1e-3);
@@ -257,6 +257,40 @@ TEST(Texture, LodBiasAndClampsMoveTheLevel) {
   EXPECT_NEAR(red_at(l, 0.5f, 0.5f, 64.0f), 0.75f * 120 + 0.25f * 240, 1e-3);
   EXPECT_FLOAT_EQ(adjusted_lod(64.0f, texture_lod(l, 0.0f)), 1.25f);
   EXPECT_FLOAT_EQ(adjusted_lod(6.0f, texture_lod(l, 0.5f)), 1.25f);  // 1.25 + 0.5, clamped to 1.25
+}
+
+TEST(Texture, ThreeDimensionalTexturesFilterTrilinearly) {
+  // 2x2x2: image 0 red 0 everywhere, image 1 red 200; (1, 1, 1) red 100 instead.
+  Texture t;
+  t.dimensions = 3;
+  TextureLevel l{2, 2, std::vector<std::uint8_t>(32, 0), 2};
+  for (int i = 4; i < 8; ++i) l.rgba[std::size_t(i) * 4] = 200;
+  l.rgba[7 * 4] = 100;
+  t.levels.push_back(l);
+  t.min_filter = t.mag_filter = TextureFilter::kLinear;
+  t.wrap_s = t.wrap_t = t.wrap_r = TextureWrap::kClampToEdge;
+  EXPECT_TRUE(t.complete());
+  auto red = [&](float s, float tt, float r) { return sample_texture(t, {s, tt, r}, 0.25f).r * 255.0f; };
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.25f), 0.0f, 1e-3);
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.75f), 200.0f, 1e-3);
+  EXPECT_NEAR(red(0.75f, 0.75f, 0.75f), 100.0f, 1e-3);
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.5f), 100.0f, 1e-3);  // halfway between the images
+  // Centre: image 1's bilinear mean (200 * 3 + 100) / 4 = 175, half of it.
+  EXPECT_NEAR(red(0.5f, 0.5f, 0.5f), 87.5f, 1e-3);
+  t.min_filter = t.mag_filter = TextureFilter::kNearest;
+  EXPECT_NEAR(red(0.9f, 0.9f, 0.6f), 100.0f, 1e-3);
+  t.wrap_r = TextureWrap::kClampToBorder;
+  t.border_color = glm::vec4(1.0f);
+  EXPECT_NEAR(red(0.9f, 0.9f, 1.2f), 255.0f, 1e-3);
+  // rho^2 adds the r difference in the depth's texels last: (1 + 0) + (0.5 * 2)^2 = 2.
+  EXPECT_FLOAT_EQ(texture_rho2(t, {0.5f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f}), 2.0f);
+  // A mipmap chain halves the depth too: 2x2x2 then 1x1x1.
+  t.min_filter = TextureFilter::kLinearMipmapLinear;
+  EXPECT_FALSE(t.complete());
+  t.levels.push_back({1, 1, std::vector<std::uint8_t>(4, 9), 2});
+  EXPECT_FALSE(t.complete());
+  t.levels[1].depth = 1;
+  EXPECT_TRUE(t.complete());
 }
 
 TEST(Texture, EnvironmentModes) {
