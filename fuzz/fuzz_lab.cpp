@@ -34,6 +34,8 @@ struct InProcessLab {
     options.max_render_seconds = 2;
     options.max_body = 64 * 1024;
     options.scene_text = R"({"image": {"width": 16, "height": 12}})";
+    options.connection_threads = 16;  // the fuzzer's requests come one at a time
+    options.render_workers = 2;
     lab = shadelab::cli::install_lab(server, options);
     port = server.bind_to_any_port("127.0.0.1");
     thread = std::thread([this] { server.listen_after_bind(); });

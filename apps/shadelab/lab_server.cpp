@@ -1,7 +1,9 @@
 // The lighting lab's server: embedded page assets and the JSON API (docs/lab.md). Scenes come
 // in as scene-file JSON and go through the same reader as the command line, so a bad value
-// gets the same message, with its key path, as a 400 answer; renders run on the server's
-// worker threads, each with its own pipeline.
+// gets the same message, with its key path, as a 400 answer. Connections are served by a large
+// pool of threads (an idle or slow connection holds only its own), request bodies are read
+// within a time limit, and renders run on a few workers through a fair, bounded queue
+// (render_queue.hpp), each with its own pipeline.
 #include "lab_server.hpp"
 
 #include <httplib.h>
@@ -14,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "lab_assets.hpp"
+#include "render_queue.hpp"
 #include "shadelab/explain.hpp"
 #include "shadelab/image.hpp"
 #include "shadelab/materials.hpp"
@@ -63,10 +66,53 @@ json material_json(const Material& m) {
 
 class Lab {
  public:
-  explicit Lab(const LabOptions& o) : options_(o) {
+  explicit Lab(const LabOptions& o)
+      : options_(o),
+        queue_(std::make_unique<RenderQueue>(o.render_workers > 0 ? o.render_workers
+                                                                  : std::max(2, int(std::thread::hardware_concurrency())),
+                                             o.max_queued_renders, o.max_client_renders)) {
     base_dir_ = o.scene_path.empty() ? fs::path(".") : fs::path(o.scene_path).parent_path();
     if (base_dir_.empty()) base_dir_ = ".";
   }
+
+  // A request that renders, with its body: read within the request's time limit, then run
+  // through the render queue; a full queue is answered 503 at once, with Retry-After.
+  void queued(const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader,
+              void (Lab::*handler)(const httplib::Request&, const std::string&, httplib::Response&) const) const {
+    std::string body;
+    if (!read_body(reader, body)) {  // too large (httplib set 413 then), or too slow
+      res.set_header("Connection", "close");
+      if (res.status == 413 || body.size() > options_.max_body) return send_error(res, 413, "the request is too large");
+      return send_error(res, 408, "the request's body took longer than the lab's limit of " +
+                                      std::to_string(options_.max_request_seconds) + " s");
+    }
+    const bool ran = queue_->run(req.remote_addr, [&] { (this->*handler)(req, body, res); });
+    if (!ran) {
+      res.set_header("Retry-After", "1");
+      send_error(res, 503, "the lab is busy: " + std::to_string(options_.max_queued_renders) +
+                               " renders are waiting (at most " + std::to_string(options_.max_client_renders) +
+                               " from one client); try again");
+    }
+  }
+
+  void explain_request(const httplib::Request&, const std::string& body, httplib::Response& res) const {
+    explain(body, res);
+  }
+
+  // The request's body, read in pieces until it is complete; false when it takes longer than
+  // the request time limit from the request's start (a client trickling its body) or is larger
+  // than the body limit.
+  bool read_body(const httplib::ContentReader& reader, std::string& body) const {
+    const auto deadline = request_start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                              std::chrono::duration<double>(options_.max_request_seconds));
+    return reader([&](const char* data, std::size_t n) {
+      body.append(data, n);
+      return body.size() <= options_.max_body && std::chrono::steady_clock::now() < deadline;
+    });
+  }
+
+  // When the request this thread serves began (set before its body is read).
+  static thread_local std::chrono::steady_clock::time_point request_start;
 
   // Parses a scene sent by the page; on failure answers 400 and returns nothing.
   std::optional<Scene> scene_from(const std::string& text, httplib::Response& res,
@@ -85,7 +131,7 @@ class Lab {
     return std::move(*r.scene);
   }
 
-  void render(const httplib::Request& req, httplib::Response& res) const {
+  void render(const httplib::Request& req, const std::string& body, httplib::Response& res) const {
     std::vector<std::string> overrides;
     RenderOptions ro;
     ro.threads = 1;  // one thread per request: the server's pool serves clients side by side
@@ -97,7 +143,7 @@ class Lab {
       else if (s == "phong") ro.shading = ShadingMode::kPhong;
       else return send_error(res, 400, "shading: expected flat, gouraud or phong, got \"" + s + "\"");
     }
-    std::optional<Scene> scene = scene_from(req.body, res, overrides);
+    std::optional<Scene> scene = scene_from(body, res, overrides);
     if (!scene) return;
     auto start = std::chrono::steady_clock::now();
     ro.deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -120,8 +166,8 @@ class Lab {
     res.set_content(std::string(png.begin(), png.end()), "image/png");
   }
 
-  void explain(const httplib::Request& req, httplib::Response& res) const {
-    json body = json::parse(req.body, nullptr, false);
+  void explain(const std::string& text, httplib::Response& res) const {
+    json body = json::parse(text, nullptr, false);
     if (body.is_discarded() || !body.is_object()) return send_error(res, 400, "expected a JSON object {scene, x, y}");
     if (!body.contains("scene") || !body["scene"].is_object()) return send_error(res, 400, "scene: expected the scene object");
     if (!body.contains("x") || !body["x"].is_number_integer() || !body.contains("y") || !body["y"].is_number_integer()) {
@@ -196,26 +242,43 @@ class Lab {
 
  private:
   LabOptions options_;
+  std::unique_ptr<RenderQueue> queue_;
   fs::path base_dir_;
 };
+
+thread_local std::chrono::steady_clock::time_point Lab::request_start;
 
 }  // namespace
 
 std::shared_ptr<const void> install_lab(httplib::Server& server, const LabOptions& options) {
   auto lab = std::make_shared<const Lab>(options);
   const Lab* l = lab.get();
-  server.new_task_queue = [] { return new httplib::ThreadPool(8); };
+  // A thread per connection, from a pool large enough for a class: an idle keep-alive
+  // connection or a slow client holds only its own thread (until the timeouts below close it);
+  // renders are limited apart, by the queue.
+  const int threads = std::max(options.connection_threads, 4);
+  server.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
   server.set_payload_max_length(options.max_body);
-  server.set_read_timeout(10, 0);
+  server.set_read_timeout(5, 0);  // a client that sends nothing for 5 s is dropped
   server.set_write_timeout(10, 0);
+  server.set_keep_alive_timeout(5);
+  server.set_keep_alive_max_count(100);
+  server.set_pre_routing_handler([](const httplib::Request&, httplib::Response&) {
+    Lab::request_start = std::chrono::steady_clock::now();
+    return httplib::Server::HandlerResponse::Unhandled;
+  });
   for (const LabAsset& a : lab_assets()) {
     std::string path = a.name == "index.html" ? "/" : "/" + a.name;
     server.Get(path, [&a](const httplib::Request&, httplib::Response& res) {
       res.set_content(std::string(a.data), a.mime);
     });
   }
-  server.Post("/api/render", [l](const httplib::Request& q, httplib::Response& r) { l->render(q, r); });
-  server.Post("/api/explain", [l](const httplib::Request& q, httplib::Response& r) { l->explain(q, r); });
+  server.Post("/api/render", [l](const httplib::Request& q, httplib::Response& r, const httplib::ContentReader& c) {
+    l->queued(q, r, c, &Lab::render);
+  });
+  server.Post("/api/explain", [l](const httplib::Request& q, httplib::Response& r, const httplib::ContentReader& c) {
+    l->queued(q, r, c, &Lab::explain_request);
+  });
   server.Get("/api/presets", [l](const httplib::Request&, httplib::Response& r) { l->presets(r); });
   server.Get("/api/shapes", [l](const httplib::Request&, httplib::Response& r) { l->shapes(r); });
   server.Get("/api/scene", [l](const httplib::Request&, httplib::Response& r) { l->scene(r); });

@@ -1,6 +1,6 @@
 // The lighting lab's HTTP server (shadelab serve): the page's embedded assets and the JSON API
-// of docs/lab.md, rendering with the library. One server per process; requests are served by
-// a pool of threads, each render on its own.
+// of docs/lab.md, rendering with the library. One server per process; connections are served
+// by a large pool of threads, renders by a few workers through a fair, bounded queue.
 #pragma once
 
 #include <cstddef>
@@ -25,6 +25,12 @@ struct LabOptions {
   int max_lights = 64;
   double max_render_seconds = 10.0;  ///< objects not started by then are left out: answered 503
   std::size_t max_fragment_mib = 256;  ///< exact transparency's fragment lists; over it: 503
+  // Serving a class: connections, request time and the render queue (render_queue.hpp).
+  int connection_threads = 256;  ///< connections served at once (more wait to be accepted)
+  double max_request_seconds = 10.0;  ///< to receive a request's body, from its start
+  int render_workers = 0;             ///< renders run at once; 0: the cores (at least 2)
+  std::size_t max_queued_renders = 64;  ///< waiting or running; more: 503 with Retry-After
+  std::size_t max_client_renders = 16;  ///< of those, from one client address
 };
 
 /// Sets up `server` as the lab: its routes, worker threads and request limits. The returned

@@ -15,7 +15,7 @@ struct ServeArgs {
   std::string scene;
   std::string host = "127.0.0.1";
   int port = 8080;
-  LabOptions limits;  // only the max_* fields
+  LabOptions limits;  // only the limits (max_*, connections, render workers)
 };
 
 // The default scene: the lecture's Lighting Controls panel (9 lights on a sphere).
@@ -71,6 +71,21 @@ Action add_serve_command(CLI::App& app) {
       ->check(CLI::Range(std::size_t(1), std::size_t(1) << 16));
   cmd->add_option("--max-body", args->limits.max_body, "Limit on a request's size in bytes (default 1048576)")
       ->check(CLI::Range(std::size_t(1024), std::size_t(1) << 30));
+  cmd->add_option("--connections", args->limits.connection_threads,
+                  "Connections served at once; more wait to be accepted (default 256)")
+      ->check(CLI::Range(4, 4096));
+  cmd->add_option("--max-request-seconds", args->limits.max_request_seconds,
+                  "Limit on receiving a request's body, from its start (default 10)")
+      ->check(CLI::Range(0.1, 3600.0));
+  cmd->add_option("--render-workers", args->limits.render_workers,
+                  "Renders run at once (default: the cores, at least 2)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--max-queued-renders", args->limits.max_queued_renders,
+                  "Renders waiting or running; more are answered 503 with Retry-After (default 64)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 16));
+  cmd->add_option("--max-client-renders", args->limits.max_client_renders,
+                  "Of those, from one client address (default 16)")
+      ->check(CLI::Range(std::size_t(1), std::size_t(1) << 16));
   cmd->footer("Example:\n  shadelab serve            then open http://127.0.0.1:8080/");
   return [args] { return run_serve(*args); };
 }

@@ -220,7 +220,7 @@ void save::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format
   const bool readable = pixels && width >= 0 && height >= 0 && format_type_error(format, type) == GL_NO_ERROR;
   std::vector<unsigned char> image;
   if (readable && type == GL_BITMAP) image = copy_bitmap(c.unpack, width, height, pixels);
-  else if (readable) image = copy_image(c.unpack, width, height, format_components(format), pixel_type_size(type), pixels);
+  else if (readable) image = copy_image(c.unpack, width, height, elements_per_pixel(format, type), pixel_type_size(type), pixels);
   record::DrawPixels(c, width, height, format, type, readable ? image.data() : nullptr, image.size());
 }
 

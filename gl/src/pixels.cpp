@@ -26,7 +26,75 @@ int pixel_type_size(GLenum type) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
     case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
     case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
-    default: return 0;
+    default: {
+      const PackedType* p = packed_type(type);
+      return p ? p->bytes : 0;
+    }
+  }
+}
+
+namespace {
+
+constexpr PackedType kPackedTypes[] = {
+    {GL_UNSIGNED_BYTE_3_3_2, 1, 3, {3, 3, 2, 0}, false},
+    {GL_UNSIGNED_BYTE_2_3_3_REV, 1, 3, {3, 3, 2, 0}, true},
+    {GL_UNSIGNED_SHORT_5_6_5, 2, 3, {5, 6, 5, 0}, false},
+    {GL_UNSIGNED_SHORT_5_6_5_REV, 2, 3, {5, 6, 5, 0}, true},
+    {GL_UNSIGNED_SHORT_4_4_4_4, 2, 4, {4, 4, 4, 4}, false},
+    {GL_UNSIGNED_SHORT_4_4_4_4_REV, 2, 4, {4, 4, 4, 4}, true},
+    {GL_UNSIGNED_SHORT_5_5_5_1, 2, 4, {5, 5, 5, 1}, false},
+    {GL_UNSIGNED_SHORT_1_5_5_5_REV, 2, 4, {5, 5, 5, 1}, true},
+    {GL_UNSIGNED_INT_8_8_8_8, 4, 4, {8, 8, 8, 8}, false},
+    {GL_UNSIGNED_INT_8_8_8_8_REV, 4, 4, {8, 8, 8, 8}, true},
+    {GL_UNSIGNED_INT_10_10_10_2, 4, 4, {10, 10, 10, 2}, false},
+    {GL_UNSIGNED_INT_2_10_10_10_REV, 4, 4, {10, 10, 10, 2}, true},
+};
+
+}  // namespace
+
+int PackedType::shift(int k) const {
+  int below = 0;  // bits of the fields before k
+  for (int i = 0; i < k; ++i) below += bits[i];
+  return rev ? below : 8 * bytes - below - bits[k];
+}
+
+float PackedType::unit(std::uint32_t e, int k) const {
+  const int b = bits[k];
+  const std::uint32_t f = field(e, k);
+  if (b >= 8) return float(double(f) / double((1u << b) - 1u));
+  std::uint32_t byte = 0;  // the field's bits repeated from the top of the byte down
+  for (int at = 8 - b; at > -b; at -= b) byte |= at >= 0 ? f << at : f >> -at;
+  return float(byte) * (1.0f / 255.0f);
+}
+
+std::uint32_t PackedType::field_from_byte(std::uint32_t v, int k) const {
+  const int b = bits[k];
+  if (b >= 8) return b == 8 ? v : (v << (b - 8)) | (v >> (16 - b));
+  return (v * ((1u << b) - 1u) + 127u) / 255u;
+}
+
+const PackedType* packed_type(GLenum type) {
+  for (const PackedType& p : kPackedTypes) {
+    if (p.type == type) return &p;
+  }
+  return nullptr;
+}
+
+std::uint32_t load_packed(const unsigned char* p, int bytes, bool swap_bytes) {
+  unsigned char b[4] = {0, 0, 0, 0};
+  for (int k = 0; k < bytes; ++k) b[k] = p[swap_bytes ? bytes - 1 - k : k];
+  switch (bytes) {
+    case 1: return b[0];
+    case 2: {
+      std::uint16_t v;
+      std::memcpy(&v, b, 2);
+      return v;
+    }
+    default: {
+      std::uint32_t v;
+      std::memcpy(&v, b, 4);
+      return v;
+    }
   }
 }
 
@@ -58,7 +126,7 @@ BitmapLayout bitmap_layout(const PixelStore& s, int width) {
 std::size_t image_stride(const PixelStore& s, GLenum format, GLenum type, int width, int height) {
   const std::size_t rows = std::size_t(s.image_height > 0 ? s.image_height : height);
   if (type == GL_BITMAP) return rows * bitmap_layout(s, width).row_stride;
-  return rows * pixel_layout(s, format_components(format), pixel_type_size(type), width).row_stride;
+  return rows * pixel_layout(s, elements_per_pixel(format, type), pixel_type_size(type), width).row_stride;
 }
 
 namespace {
@@ -127,7 +195,10 @@ void write_component(unsigned char* p, GLenum type, float v) {
 
 void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[4], bool swap_bytes) {
   const int size = pixel_type_size(type);
+  const PackedType* packed = packed_type(type);
+  const std::uint32_t element = packed ? load_packed(p, size, swap_bytes) : 0;
   auto c = [&](int i) {
+    if (packed) return packed->unit(element, i);
     if (!swap_bytes || size == 1) return read_component(p + i * size, type);
     unsigned char b[4] = {0, 0, 0, 0};
     for (int k = 0; k < size; ++k) b[k] = p[i * size + size - 1 - k];
@@ -156,6 +227,15 @@ int format_components(GLenum format) {
   return color_format_components(format);
 }
 
+int elements_per_pixel(GLenum format, GLenum type) { return packed_type(type) ? 1 : format_components(format); }
+
+GLenum packed_format_error(GLenum format, GLenum type) {
+  const PackedType* p = packed_type(type);
+  if (!p) return GL_NO_ERROR;
+  const bool fits = p->components == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
+  return fits ? GL_NO_ERROR : GL_INVALID_OPERATION;
+}
+
 bool is_color_format(GLenum format) { return color_format_components(format) > 0; }
 
 GLenum format_type_error(GLenum format, GLenum type) {
@@ -163,7 +243,8 @@ GLenum format_type_error(GLenum format, GLenum type) {
   if (type == GL_BITMAP) {
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   }
-  return pixel_type_size(type) > 0 ? GL_NO_ERROR : GL_INVALID_ENUM;
+  if (pixel_type_size(type) == 0) return GL_INVALID_ENUM;
+  return packed_format_error(format, type);
 }
 
 namespace {
@@ -204,7 +285,7 @@ void unpack_rgba_image(const GlContext& c, const PixelStore& store, int row_pixe
   const auto* in = static_cast<const unsigned char*>(pixels);
   const bool index = format == GL_COLOR_INDEX;
   const PixelLayout layout =
-      type == GL_BITMAP ? PixelLayout{} : pixel_layout(store, index ? 1 : color_format_components(format), pixel_type_size(type), row_pixels);
+      type == GL_BITMAP ? PixelLayout{} : pixel_layout(store, index ? 1 : elements_per_pixel(format, type), pixel_type_size(type), row_pixels);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x, out += 4) {
       glm::vec4 rgba;
@@ -241,7 +322,7 @@ std::size_t bitmap_byte(const PixelStore& s, std::size_t row_bytes, int x, int y
 
 ClientImage::ClientImage(const PixelStore& store, const void* pixels, int width, GLenum format, GLenum type)
     : base_(static_cast<const unsigned char*>(pixels)), store_(store), type_(type),
-      components_(format_components(format)), size_(pixel_type_size(type)) {
+      components_(elements_per_pixel(format, type)), size_(pixel_type_size(type)), packed_(packed_type(type)) {
   if (type == GL_BITMAP) bitmap_row_ = bitmap_row_bytes(store, width);
   else layout_ = pixel_layout(store, components_, size_, width);
 }
@@ -254,6 +335,7 @@ const unsigned char* ClientImage::element(int x, int y, int k, unsigned char swa
 }
 
 float ClientImage::component(int x, int y, int k) const {
+  if (packed_) return packed_->unit(load_packed(base_ + layout_.offset(x, y), size_, store_.swap_bytes), k);
   unsigned char swapped[4];
   return read_component(element(x, y, k, swapped), type_);
 }
@@ -285,7 +367,7 @@ bool ClientImage::bit(int x, int y) const {
 ClientImageWriter::ClientImageWriter(const PixelStore& store, void* pixels, int width, GLenum format, GLenum type)
     : base_(static_cast<unsigned char*>(pixels)), store_(store), size_(pixel_type_size(type)) {
   if (type == GL_BITMAP) bitmap_row_ = bitmap_row_bytes(store, width);
-  else layout_ = pixel_layout(store, format_components(format), size_, width);
+  else layout_ = pixel_layout(store, elements_per_pixel(format, type), size_, width);
 }
 
 void ClientImageWriter::put(int x, int y, int k, const unsigned char* bytes) {

@@ -20,8 +20,36 @@ namespace shadelab::gl {
 /// GL_BLUE, GL_ALPHA, GL_LUMINANCE, GL_LUMINANCE_ALPHA); 0 for others.
 int color_format_components(GLenum format);
 
-/// Bytes of one component of `type` (GL_UNSIGNED_BYTE .. GL_FLOAT); 0 for others.
+/// Bytes of one element of `type`: a component of GL_UNSIGNED_BYTE .. GL_FLOAT, a whole pixel
+/// of a packed type; 0 for others.
 int pixel_type_size(GLenum type);
+
+/// A packed pixel type of GL 1.2 (GL 1.5 section 3.6.4, tables 3.8-3.11): each pixel one
+/// element of `bytes` bytes holding `components` fields of `bits[k]` bits. The format's first
+/// component is in the most significant bits, or with a _REV type in the least significant.
+struct PackedType {
+  GLenum type;
+  int bytes, components;
+  int bits[4];
+  bool rev;
+  /// Where field k starts, counted from the element's least significant bit.
+  int shift(int k) const;
+  /// Field k of element `e`, as an integer of bits[k] bits.
+  std::uint32_t field(std::uint32_t e, int k) const { return (e >> shift(k)) & ((1u << bits[k]) - 1u); }
+  /// Field k of element `e` in [0, 1]: the integer over 2^bits - 1, except that a field of
+  /// fewer than 8 bits is first widened to 8 by repeating its bits, as Mesa converts packed
+  /// pixels to bytes (so that a pixel drawn or a texel stored from it has that byte exactly).
+  float unit(std::uint32_t e, int k) const;
+  /// An 8-bit component as field k, as Mesa's unorm conversion rounds it (more bits than 8:
+  /// the byte's bits repeated).
+  std::uint32_t field_from_byte(std::uint32_t v, int k) const;
+};
+/// The packed type `type` is, or nullptr.
+const PackedType* packed_type(GLenum type);
+/// Elements per pixel of `format` in `type`: 1 for a packed type, else format_components.
+int elements_per_pixel(GLenum format, GLenum type);
+/// A packed element of `bytes` bytes at `p`, its bytes reversed first when `swap_bytes`.
+std::uint32_t load_packed(const unsigned char* p, int bytes, bool swap_bytes);
 
 /// Where pixel (x, y) of an image starts, relative to the client pointer.
 struct PixelLayout {
@@ -97,10 +125,14 @@ int format_components(GLenum format);
 bool is_color_format(GLenum format);
 
 /// The error a format/type pair of glDrawPixels, glReadPixels or glTexImage draws when the
-/// enums themselves are wrong (GL 1.1 tables 3.5, 3.6; Mesa's codes): GL_INVALID_ENUM for an
-/// unknown format or type and for GL_BITMAP with anything but an index format; GL_NO_ERROR
-/// otherwise.
+/// enums themselves are wrong (GL 1.5 tables 3.5-3.8; Mesa's codes): GL_INVALID_ENUM for an
+/// unknown format or type and for GL_BITMAP with anything but an index format,
+/// GL_INVALID_OPERATION for a packed type with a format of other than its components
+/// (packed_format_error); GL_NO_ERROR otherwise.
 GLenum format_type_error(GLenum format, GLenum type);
+/// GL_INVALID_OPERATION when `type` is packed and `format` is not one it packs (GL_RGB for
+/// the 3-component types, GL_RGBA and GL_BGRA for the 4-component ones); else GL_NO_ERROR.
+GLenum packed_format_error(GLenum format, GLenum type);
 
 /// A client image of `width`-pixel rows as glPixelStore's parameters lay it out (GL 1.1
 /// section 3.6.3 for unpacking, 4.3.2 for packing: the same layout). Pixel (x, y) is the x-th
@@ -110,8 +142,9 @@ class ClientImage {
  public:
   ClientImage(const PixelStore& store, const void* pixels, int width, GLenum format, GLenum type);
 
-  /// Element k of pixel (x, y) as a colour component or depth: table 2.6's conversion
-  /// (unsigned integers to [0, 1], signed to [-1, 1]), floats as they are. Not for GL_BITMAP.
+  /// Component k of pixel (x, y) as a colour component or depth: table 2.6's conversion
+  /// (unsigned integers to [0, 1], signed to [-1, 1]), floats as they are, field k of a packed
+  /// type's element over its largest value. Not for GL_BITMAP.
   float component(int x, int y, int k) const;
   /// The element of pixel (x, y) of an index image as an integer (floats truncated), or its
   /// bit for GL_BITMAP.
@@ -126,6 +159,7 @@ class ClientImage {
   PixelStore store_;
   GLenum type_;
   int components_, size_;
+  const PackedType* packed_;
   PixelLayout layout_;
   std::size_t bitmap_row_ = 0;  // bytes per row of a GL_BITMAP image
 };
@@ -136,7 +170,8 @@ class ClientImage {
 class ClientImageWriter {
  public:
   ClientImageWriter(const PixelStore& store, void* pixels, int width, GLenum format, GLenum type);
-  /// Element k of pixel (x, y): `bytes` holds it in the element type, native byte order.
+  /// Element k of pixel (x, y): `bytes` holds it in the element type, native byte order (a
+  /// packed type's pixel is its element 0).
   void put(int x, int y, int k, const unsigned char* bytes);
   void put_bit(int x, int y, bool on);
   int element_size() const { return size_; }

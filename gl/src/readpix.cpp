@@ -64,6 +64,26 @@ void put_float(ClientImageWriter& w, int x, int y, int k, GLenum type, float f) 
   }
 }
 
+// A packed pixel from its components in the format's order: `bytes8` the 8-bit components
+// (exact) or `unit` the transferred values in [0, 1], rounded as Mesa packs floats: to 8 bits
+// as float_to_ubyte, to other widths half away from zero.
+void put_packed(ClientImageWriter& w, int x, int y, const PackedType& p, const std::uint32_t* bytes8, const float* unit) {
+  std::uint32_t e = 0;
+  for (int k = 0; k < p.components; ++k) {
+    const std::uint32_t max = (1u << p.bits[k]) - 1u;
+    std::uint32_t f = 0;
+    if (bytes8) f = p.field_from_byte(bytes8[k], k);
+    else if (p.bits[k] == 8) f = float_to_ubyte(unit[k]);
+    else f = std::uint32_t(std::round(unit[k] * float(max)));
+    e |= f << p.shift(k);
+  }
+  switch (p.bytes) {
+    case 1: return put(w, x, y, 0, GLubyte(e));
+    case 2: return put(w, x, y, 0, GLushort(e));
+    default: return put(w, x, y, 0, GLuint(e));
+  }
+}
+
 // Which of R, G, B, A (0-3; 4 for luminance) each element of a colour format holds.
 int color_slots(GLenum format, int slots[4]) {
   switch (format) {
@@ -102,9 +122,18 @@ void read_color(const GlContext& c, const ReadRect& r, GLenum format, GLenum typ
   const bool luminance = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
   const bool transfer = c.pixel.changes_color();
   const bool exact = !luminance && !transfer;
+  const PackedType* packed = packed_type(type);  // never with luminance (format_type_error)
   for (int j = r.y0; j < r.y1; ++j) {
     for (int i = r.x0; i < r.x1; ++i) {
       const std::uint8_t* px = &c.fb.color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + i)) * 4];
+      if (packed) {
+        std::uint32_t bytes8[4];
+        const glm::vec4 v = transfer ? transfer_color(c.pixel, unit_color(px)) : glm::vec4(0.0f);
+        float unit[4];
+        for (int k = 0; k < n; ++k) bytes8[k] = px[slots[k]], unit[k] = clamp01(v[slots[k]]);
+        put_packed(w, i, j, *packed, transfer ? nullptr : bytes8, unit);
+        continue;
+      }
       if (exact) {
         for (int k = 0; k < n; ++k) put_exact(w, i, j, k, type, px[slots[k]]);
         continue;

@@ -26,12 +26,12 @@ bool is_pixel_format(GLenum format) {
 }
 
 // Mesa's _mesa_error_check_format_and_type and texture_formats_agree for a colour texture:
-// unknown enums and GL_BITMAP with other than an index format are GL_INVALID_ENUM, depth and
-// stencil images GL_INVALID_OPERATION.
+// unknown enums and GL_BITMAP with other than an index format are GL_INVALID_ENUM, a packed
+// type with a format it does not pack, depth and stencil images GL_INVALID_OPERATION.
 GLenum check_format_and_type(GLenum format, GLenum type) {
   if (!is_pixel_format(format) || !is_pixel_type(type)) return GL_INVALID_ENUM;
   if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
-  return GL_NO_ERROR;
+  return packed_format_error(format, type);
 }
 
 bool formats_agree(GLenum format) { return format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX; }
@@ -163,7 +163,8 @@ std::vector<unsigned char> list_image(const GlContext& c, int width, int height,
     if (format != GL_COLOR_INDEX || depth > 0) return {};
     return copy_bitmap(c.unpack, width, height, pixels);
   }
-  const int components = format == GL_COLOR_INDEX ? 1 : color_format_components(format), size = pixel_type_size(type);
+  const int components = format == GL_COLOR_INDEX ? 1 : color_format_components(format) ? elements_per_pixel(format, type) : 0;
+  const int size = pixel_type_size(type);
   if (components == 0 || size == 0) return {};
   if (depth == 0) return copy_image(c.unpack, width, height, components, size, pixels);
   // A 3D image: each image as copy_image reads a 2D one, after the skipped images.

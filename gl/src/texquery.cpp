@@ -151,6 +151,7 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
   const bool known_format = color_format_components(format) != 0 || format == GL_COLOR_INDEX ||
                             format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
   if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
+  if (const GLenum e = packed_format_error(format, type); e != GL_NO_ERROR) return c.set_error(e);
   if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) return c.set_error(GL_INVALID_OPERATION);
   TextureObject& t = *bound_texture(c, target);
   if (std::size_t(level) >= t.images.size() || !t.images[std::size_t(level)].defined || !pixels) return;
@@ -158,7 +159,8 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
   const TexImage& img = t.images[std::size_t(level)];
   const TextureLevel& core = t.texture.levels[std::size_t(level)];
   const int n = color_format_components(format), size = pixel_type_size(type);
-  const PixelLayout layout = pixel_layout(c.pack, n, size, img.width);
+  const PackedType* packed = packed_type(type);
+  const PixelLayout layout = pixel_layout(c.pack, elements_per_pixel(format, type), size, img.width);
   // 3D images one after the other, GL_PACK_IMAGE_HEIGHT rows apart, after GL_PACK_SKIP_IMAGES.
   const bool three_d = target == GL_TEXTURE_3D;
   const std::size_t stride = three_d ? image_stride(c.pack, format, type, img.width, img.height) : 0;
@@ -171,6 +173,14 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
         texel_rgba(img, core, row * std::size_t(img.width) + std::size_t(x), rgba);
         select_components(format, rgba, comps);
         unsigned char* p = out + layout.offset(x, y);
+        if (packed) {  // one element: the components' fields, from their bytes as Mesa converts them
+          std::uint32_t e = 0;
+          for (int k = 0; k < n; ++k) e |= packed->field_from_byte(stored_to_byte(comps[k].k, comps[k].bits), k) << packed->shift(k);
+          if (size == 1) *p = static_cast<unsigned char>(e);
+          else if (size == 2) put(p, GLushort(e), c.pack.swap_bytes);
+          else put(p, GLuint(e), c.pack.swap_bytes);
+          continue;
+        }
         for (int k = 0; k < n; ++k) pack_component(comps[k], type, c.pack.swap_bytes, p + k * size);
       }
     }

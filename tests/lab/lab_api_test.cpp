@@ -2,8 +2,11 @@
 // process, and these tests talk to it as the page does (docs/lab.md).
 #include <gtest/gtest.h>
 
+#include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -303,6 +306,161 @@ TEST(LabApi, ConcurrentRequestsAreServedSideBySide) {
   ASSERT_TRUE(small);
   EXPECT_EQ(small->status, 200);
   EXPECT_TRUE(answered_first);
+}
+
+// A raw connection to the lab on loopback (-1 on failure).
+int connect_lab(int port) {
+  int fd = socket(AF_INET, SOCK_STREAM, 0);
+  if (fd < 0) return -1;
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_port = htons(std::uint16_t(port));
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+bool send_text(int fd, const std::string& s) {
+  return send(fd, s.data(), s.size(), MSG_NOSIGNAL) == ssize_t(s.size());
+}
+
+// Latency bounds of the load test: generous, and ten times more in a sanitized build.
+double latency_scale() {
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  return 10.0;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+  return 10.0;
+#else
+  return 1.0;
+#endif
+#else
+  return 1.0;
+#endif
+}
+
+// A class on one lab: 200 connections at once, of which 32 idle (connected, nothing sent),
+// 32 trickling a render request's body a byte at a time, and 136 keep-alive connections that
+// made a request and wait; meanwhile the page is answered within 1 s and a small render within
+// 2 s. (A pool of 8 threads, each held by a connection that does nothing, took 5-60 s.)
+TEST(LabApi, AClassOfConnectionsDoesNotHoldUpThePageOrASmallRender) {
+  const int port = server().port();
+  ASSERT_GT(port, 0);
+  // The connections arrive over about half a second, as a class's browsers do (a burst of
+  // hundreds within microseconds would overflow the listening socket's accept queue).
+  auto pace = [] { std::this_thread::sleep_for(std::chrono::milliseconds(2)); };
+  std::vector<int> fds;
+  for (int i = 0; i < 32; ++i) fds.push_back(connect_lab(port)), pace();
+  std::vector<int> tricklers;
+  for (int i = 0; i < 32; ++i) {
+    pace();
+    int fd = connect_lab(port);
+    send_text(fd, "POST /api/render HTTP/1.1\r\nHost: lab\r\nContent-Type: application/json\r\n"
+                  "Content-Length: 100000\r\n\r\n{");
+    tricklers.push_back(fd);
+  }
+  std::atomic<bool> stop{false};
+  std::thread trickle([&] {
+    while (!stop) {
+      for (int fd : tricklers) send_text(fd, " ");
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+  });
+  for (int i = 0; i < 136; ++i) {
+    pace();
+    int fd = connect_lab(port);
+    send_text(fd, "GET /api/presets HTTP/1.1\r\nHost: lab\r\n\r\n");
+    fds.push_back(fd);
+  }
+  for (int fd : fds) EXPECT_GE(fd, 0);
+  for (int fd : tricklers) EXPECT_GE(fd, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+
+  auto c = server().client();
+  auto t0 = std::chrono::steady_clock::now();
+  auto page = c.Get("/");
+  const double page_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(page);
+  EXPECT_EQ(page->status, 200);
+  EXPECT_LT(page_s, 1.0 * latency_scale()) << "the page took " << page_s << " s";
+
+  json small = json::parse(kPhongScene);
+  small["image"] = {{"width", 32}, {"height", 24}};
+  t0 = std::chrono::steady_clock::now();
+  auto render = c.Post("/api/render", small.dump(), "application/json");
+  const double render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(render);
+  EXPECT_EQ(render->status, 200);
+  EXPECT_LT(render_s, 2.0 * latency_scale()) << "a small render took " << render_s << " s";
+  std::printf("lab load: 200 connections open; the page in %.4f s, a small render in %.4f s\n", page_s, render_s);
+
+  stop = true;
+  trickle.join();
+  for (int fd : fds) close(fd);
+  for (int fd : tricklers) close(fd);
+}
+
+// A body trickled for longer than the request time limit is answered 408 at the limit, so
+// that the client's thread is not held for as long as the client likes.
+TEST(LabApi, ABodyTrickledPastTheRequestTimeLimitIsAnswered408) {
+  LabServer lab({"--max-request-seconds", "1"});
+  ASSERT_GT(lab.port(), 0);
+  int fd = connect_lab(lab.port());
+  ASSERT_GE(fd, 0);
+  send_text(fd, "POST /api/render HTTP/1.1\r\nHost: lab\r\nContent-Length: 1000\r\n\r\n{");
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string answer;
+  while (answer.find("\r\n") == std::string::npos && std::chrono::steady_clock::now() - t0 < std::chrono::seconds(20)) {
+    send_text(fd, " ");
+    char b[512];
+    ssize_t n = recv(fd, b, sizeof b, MSG_DONTWAIT);
+    if (n > 0) answer.append(b, std::size_t(n));
+    if (n == 0) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  close(fd);
+  EXPECT_EQ(answer.rfind("HTTP/1.1 408", 0), 0u) << answer;
+  EXPECT_LT(s, 1.0 + 5.0 * latency_scale()) << "the trickled request was kept " << s << " s";
+}
+
+// More renders than the queue holds: the ones over it are answered 503 with Retry-After at
+// once; the others render.
+TEST(LabApi, RendersOverTheQueuesBoundAre503WithRetryAfter) {
+  LabServer lab({"--render-workers", "1", "--max-queued-renders", "2", "--max-client-renders", "2"});
+  ASSERT_GT(lab.port(), 0);
+  json medium = json::parse(kPhongScene);
+  medium["image"] = {{"width", 400}, {"height", 300}};
+  medium["objects"][0]["shape"]["slices"] = 512;
+  medium["objects"][0]["shape"]["stacks"] = 256;
+  const std::string body = medium.dump();
+  std::atomic<int> ok{0}, busy{0}, other{0};
+  std::atomic<bool> fast_refusal{true};
+  std::vector<std::thread> clients;
+  for (int i = 0; i < 6; ++i) {
+    clients.emplace_back([&] {
+      auto c = lab.client();
+      auto t0 = std::chrono::steady_clock::now();
+      auto r = c.Post("/api/render", body, "application/json");
+      const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      if (r && r->status == 200) {
+        ++ok;
+      } else if (r && r->status == 503 && r->get_header_value("Retry-After") == "1") {
+        ++busy;
+        if (s > 1.0 * latency_scale()) fast_refusal = false;
+      } else {
+        ++other;
+      }
+    });
+  }
+  for (std::thread& t : clients) t.join();
+  EXPECT_GE(ok.load(), 2);
+  EXPECT_GE(busy.load(), 1);
+  EXPECT_EQ(other.load(), 0);
+  EXPECT_TRUE(fast_refusal.load());
 }
 
 }  // namespace
