@@ -91,6 +91,13 @@ class Input {
         GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
         GL_INCR_WRAP, GL_DECR_WRAP, GL_SAMPLES_PASSED, GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE,
         GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY,
+        // GL 1.2-1.4 texture state: wrap modes, LOD clamps and bias, level range, generation.
+        GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_TEXTURE_WRAP_R,
+        GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
+        GL_TEXTURE_LOD_BIAS, GL_TEXTURE_FILTER_CONTROL, GL_MAX_TEXTURE_LOD_BIAS, GL_GENERATE_MIPMAP,
+        GL_GENERATE_MIPMAP_HINT, GL_TEXTURE_3D, GL_PROXY_TEXTURE_3D, GL_TEXTURE_BINDING_3D,
+        GL_MAX_3D_TEXTURE_SIZE, GL_TEXTURE_DEPTH, GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES,
+        GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -112,7 +119,9 @@ struct Buffers {
   std::uint32_t indices[256];
   // Pixel data: (skip + extent) rows of up to max(row length, extent) pixels of up to 16 bytes
   // (4 float components), with alignment padding; far more than any allowed call can touch.
-  alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 64];
+  // Room for 3D images too: up to kMaxImage skipped images of kMaxImage rows of kMaxImage
+  // 16-byte pixels, and the images themselves.
+  alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 96 * 1024];
   double out[32];
   // glCallLists' names: bytes (up to 16 names of up to 4 bytes), and 65,536 GL_UNSIGNED_INT
   // names of which only the first few name lists the calls can define.
@@ -258,6 +267,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                      in.small(-1, kMaxImage), in.small(0, 1), in.any_enum(), in.any_enum(), b->pixels);
         glTexParameteri(GL_TEXTURE_2D, in.any_enum(), GLint(in.any_enum()));
         glTexEnvi(in.any_enum(), in.any_enum(), GLint(in.any_enum()));
+        // Numeric parameters (LOD clamps and biases, levels), a mipmap generation hint.
+        glTexParameterf(GL_TEXTURE_2D, in.any_enum(), in.byte() % 2 ? in.number() : float(in.small(-2, 20)));
+        glTexEnvf(in.any_enum(), in.any_enum(), in.number());
+        glHint(in.any_enum(), in.any_enum());
         if (in.byte() % 4 == 0) glDeleteTextures(1, &name);
         break;
       }
@@ -341,6 +354,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 60:
         glTexSubImage2D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-2, kMaxImage),
                         in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.any_enum(), in.any_enum(), b->pixels);
+        // 3D images (at most 6 x 6 x 5 with a border) and sub-images.
+        glBindTexture(GL_TEXTURE_3D, in.byte() % 4);
+        glTexImage3D(in.byte() % 2 ? GLenum(GL_TEXTURE_3D) : in.any_enum(), in.small(-1, 3), GLint(in.any_enum()),
+                     in.small(-1, 4), in.small(-1, 4), in.small(-1, 3), in.small(0, 1), in.any_enum(), in.any_enum(),
+                     in.byte() % 8 ? b->pixels : nullptr);
+        glTexSubImage3D(in.byte() % 2 ? GLenum(GL_TEXTURE_3D) : in.any_enum(), in.small(-1, 3), in.small(-2, 4),
+                        in.small(-2, 4), in.small(-2, 3), in.small(-1, 4), in.small(-1, 4), in.small(-1, 3),
+                        in.any_enum(), in.any_enum(), b->pixels);
+        glCopyTexSubImage3D(GL_TEXTURE_3D, in.small(-1, 3), in.small(-2, 4), in.small(-2, 4), in.small(-2, 3),
+                            in.small(-20, kSize), in.small(-20, kSize), in.small(-1, 4), in.small(-1, 4));
         break;
       case 61:  // copies from the framebuffer, inside it or not
         glCopyTexImage2D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-20, kSize), in.small(-20, kSize),

@@ -47,6 +47,8 @@ inline constexpr int kMaxProjectionDepth = 32;
 inline constexpr int kMaxTextureStackDepth = 10;
 inline constexpr int kMaxTextureSize = 16384;  // as llvmpipe's
 inline constexpr int kMaxTextureLevels = 15;    // levels 0 .. log2(kMaxTextureSize)
+inline constexpr int kMax3dTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE, as llvmpipe's
+inline constexpr int kMax3dTextureLevels = 12;  // levels 0 .. log2(kMax3dTextureSize)
 inline constexpr int kMaxViewportDim = 16384;
 inline constexpr int kMaxBufferDim = 16384;  // OSMESA_MAX_WIDTH / OSMESA_MAX_HEIGHT
 
@@ -188,6 +190,7 @@ struct PrimState {
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
+  GLint image_height = 0, skip_images = 0;  // GL 1.2: 3D images (section 3.6.4)
   bool swap_bytes = false, lsb_first = false;
 };
 
@@ -256,10 +259,10 @@ struct AttribRecord {
   struct TextureTarget {
     GLenum target = 0;
     GLuint name = 0;
-    std::array<float, 9> bound{}, defaults{};
+    std::array<float, 16> bound{}, defaults{};  // attrib.cpp's kTextureParameters
   };
   std::vector<TextureTarget> texture_targets;
-  std::array<GLenum, 5> hints{};
+  std::array<GLenum, 6> hints{};
   GLenum matrix_mode = GL_MODELVIEW;
   GLuint list_base = 0;
   RasterPosition raster_pos;  // current group (table 6.5)
@@ -323,8 +326,9 @@ struct GlContext {
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;
-  std::array<GLenum, 5> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
-                              GL_DONT_CARE};
+  // glHint, by state.cpp's hint_slot: the GL 1.1 hints, then GL_GENERATE_MIPMAP_HINT (1.4).
+  std::array<GLenum, 6> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+                              GL_DONT_CARE, GL_DONT_CARE};
 
   GLenum matrix_mode = GL_MODELVIEW;
   MatrixStack modelview{{glm::mat4(1.0f)}, kMaxModelviewDepth};

@@ -86,6 +86,13 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_COORD_ARRAY_STRIDE: out = ints({double(a.fog_coord.stride)}); return true;
     default: break;
   }
+  switch (pname) {  // GL 1.2's 3D image layout
+    case GL_PACK_IMAGE_HEIGHT: out = ints({double(c.pack.image_height)}); return true;
+    case GL_PACK_SKIP_IMAGES: out = ints({double(c.pack.skip_images)}); return true;
+    case GL_UNPACK_IMAGE_HEIGHT: out = ints({double(c.unpack.image_height)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: out = ints({double(c.unpack.skip_images)}); return true;
+    default: break;
+  }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
   bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
   if (!pack && !unpack) return false;
@@ -178,6 +185,7 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_COORD_SRC: out = ints({double(c.fog.coord_source)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
+    case GL_TEXTURE_BINDING_3D: out = ints({double(c.textures.binding_3d.name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
     case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;
@@ -251,6 +259,7 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({kMaxAttribStackDepth}); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({kMaxClientAttribStackDepth}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3dTextureSize}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_SUBPIXEL_BITS: out = ints({8}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = ints({double(c.hints[0])}); return true;
@@ -258,6 +267,8 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
+    case GL_GENERATE_MIPMAP_HINT: out = ints({double(c.hints[5])}); return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = make(Kind::kFloat, {kMaxTextureLodBias}); return true;
     case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({kMaxEvalOrder}); return true;
     case GL_MAP1_GRID_DOMAIN: out = make(Kind::kFloat, {c.eval.attribs.grid1_u1, c.eval.attribs.grid1_u2}); return true;

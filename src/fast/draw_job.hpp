@@ -83,6 +83,7 @@ enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kB
 struct TexturePlan {
   const Texture* texture = nullptr;  ///< complete; null: the draw is not textured
   bool one_d = false;
+  bool three_d = false;  ///< r sampled too (texcoord planes project it)
   /// A level of detail per quad is needed: mipmaps, or minification and magnification
   /// filtering differently. Otherwise level 0 with the one filter.
   bool lod = false;
@@ -90,9 +91,11 @@ struct TexturePlan {
   bool linear_mip = false;  ///< *_MIPMAP_LINEAR: two levels blended
   bool mag_linear = false;  ///< GL_LINEAR magnification
   bool min_linear = false;  ///< linear within a level when minified (GL_LINEAR, GL_LINEAR_MIPMAP_*)
-  TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
-  float width = 0.0f, height = 0.0f;  ///< level 0's
+  TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat, wrap_r = TextureWrap::kRepeat;
+  float width = 0.0f, height = 0.0f, depth = 0.0f;  ///< the base level's
+  int base_level = 0;                 ///< Texture::base_level
   int last_level = 0;                 ///< Texture::last_level
+  TextureLod adjust;                  ///< texture_lod: bias and clamps
   float border[4] = {};               ///< the border colour in byte units
   TextureEnvMode env = TextureEnvMode::kModulate;
   TextureFormat format = TextureFormat::kRgba;

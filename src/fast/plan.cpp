@@ -62,16 +62,21 @@ TexturePlan texture_plan(const ShadeState& shade) {
   if (!t) return tp;
   tp.texture = t;
   tp.one_d = t->dimensions == 1;
+  tp.three_d = t->dimensions == 3;
   tp.mipmaps = uses_mipmaps(t->min_filter);
   tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.mag_linear = t->mag_filter == TextureFilter::kLinear;
   tp.min_linear = t->min_filter == TextureFilter::kLinear || t->min_filter == TextureFilter::kLinearMipmapNearest ||
                   t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.lod = tp.mipmaps || tp.min_linear != tp.mag_linear;
-  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t;
-  tp.width = float(t->levels[0].width), tp.height = float(t->levels[0].height);
+  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t, tp.wrap_r = t->wrap_r;
+  const TextureLevel& base = t->levels[std::size_t(t->base_level)];
+  tp.width = float(base.width), tp.height = float(base.height), tp.depth = float(base.depth);
+  tp.base_level = t->base_level;
   tp.last_level = t->last_level();
-  for (int c = 0; c < 4; ++c) tp.border[c] = t->border_color[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
+  tp.adjust = texture_lod(*t, shade.texture_lod_bias);
+  const glm::vec4 border = border_texel(*t);
+  for (int c = 0; c < 4; ++c) tp.border[c] = border[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
   tp.env = shade.texture_env;
   tp.format = t->format;
   return tp;
