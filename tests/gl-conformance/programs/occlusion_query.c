@@ -277,8 +277,8 @@ static void scene_arrays(void) {
 }
 
 static void scene_bitmap(void) {
-  static GLubyte glyph[16 * 2];
-  for (int i = 0; i < 32; ++i) glyph[i] = (GLubyte)((i * 73) ^ 0xa5);
+  static GLubyte glyph[16 * 4]; /* 16 rows of 2 bytes, each padded to the default unpack alignment of 4 */
+  for (int i = 0; i < 64; ++i) glyph[i] = (GLubyte)((i * 73) ^ 0xa5);
   glColor3f(1.0f, 0.9f, 0.2f);
   glRasterPos2f(-0.9f, 0.5f);
   for (int i = 0; i < 5; ++i) glBitmap(16, 16, 0.0f, 0.0f, 17.0f, -3.0f, glyph);
