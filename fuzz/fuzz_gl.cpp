@@ -81,6 +81,23 @@ class Input {
         GL_EYE_PLANE, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_Q, GL_INTENSITY, GL_RGB5_A1, GL_RGBA16,
         GL_R3_G3_B2, GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_WIDTH, GL_TEXTURE_BORDER,
         GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
+        // GL 1.4's per-vertex state: the colour sum, the secondary colour array.
+        GL_COLOR_SUM, GL_SECONDARY_COLOR_ARRAY, GL_CURRENT_SECONDARY_COLOR,
+        GL_FOG_COORD_ARRAY, GL_FOG_COORD_SRC, GL_FOG_COORD, GL_FRAGMENT_DEPTH, GL_CURRENT_FOG_COORD,
+        GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, GL_POINT_DISTANCE_ATTENUATION,
+        // GL 1.4's blending and stencil, GL 1.5's occlusion queries.
+        GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX, GL_CONSTANT_COLOR,
+        GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_COLOR,
+        GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
+        GL_INCR_WRAP, GL_DECR_WRAP, GL_SAMPLES_PASSED, GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE,
+        GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY,
+        // GL 1.2-1.4 texture state: wrap modes, LOD clamps and bias, level range, generation.
+        GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_TEXTURE_WRAP_R,
+        GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
+        GL_TEXTURE_LOD_BIAS, GL_TEXTURE_FILTER_CONTROL, GL_MAX_TEXTURE_LOD_BIAS, GL_GENERATE_MIPMAP,
+        GL_GENERATE_MIPMAP_HINT, GL_TEXTURE_3D, GL_PROXY_TEXTURE_3D, GL_TEXTURE_BINDING_3D,
+        GL_MAX_3D_TEXTURE_SIZE, GL_TEXTURE_DEPTH, GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES,
+        GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -102,7 +119,9 @@ struct Buffers {
   std::uint32_t indices[256];
   // Pixel data: (skip + extent) rows of up to max(row length, extent) pixels of up to 16 bytes
   // (4 float components), with alignment padding; far more than any allowed call can touch.
-  alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 64];
+  // Room for 3D images too: up to kMaxImage skipped images of kMaxImage rows of kMaxImage
+  // 16-byte pixels, and the images themselves.
+  alignas(16) unsigned char pixels[(2 * kMaxImage + kSize) * (2 * kMaxImage + kSize) * 16 + 96 * 1024];
   double out[32];
   // glCallLists' names: bytes (up to 16 names of up to 4 bytes), and 65,536 GL_UNSIGNED_INT
   // names of which only the first few name lists the calls can define.
@@ -176,7 +195,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 4: glVertex3f(in.number(), in.number(), in.number()); break;
       case 5: glVertex4f(in.number(), in.number(), in.number(), in.number()); break;
       case 6: glNormal3f(in.number(), in.number(), in.number()); break;
-      case 7: glColor4f(in.number(), in.number(), in.number(), in.number()); break;
+      case 7:  // the primary colour, or GL 1.4's secondary colour
+        if (in.byte() % 4) glColor4f(in.number(), in.number(), in.number(), in.number());
+        else if (in.byte() % 2) glSecondaryColor3f(in.number(), in.number(), in.number());
+        else glFogCoordf(in.number());
+        break;
       case 8: glTexCoord2f(in.number(), in.number()); break;
       case 9:
         for (float& v : f) v = in.number();
@@ -218,7 +241,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 21: glOrtho(in.number(), in.number(), in.number(), in.number(), in.number(), in.number()); break;
       case 22: glViewport(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;
       case 23: glClear(GLbitfield(in.byte()) << 8 | in.byte()); break;
-      case 24: glBlendFunc(in.any_enum(), in.any_enum()); break;
+      case 24:  // blending (GL 1.4) and occlusion queries (GL 1.5), names 0 to 4
+        switch (in.byte() % 8) {
+          case 0: glBlendFunc(in.any_enum(), in.any_enum()); break;
+          case 1: glBlendFuncSeparate(in.any_enum(), in.any_enum(), in.any_enum(), in.any_enum()); break;
+          case 2: glBlendEquation(in.any_enum()); break;
+          case 3: glBlendColor(in.number(), in.number(), in.number(), in.number()); break;
+          case 4: {
+            GLuint names[4] = {GLuint(in.small(0, 4)), GLuint(in.small(0, 4)), 0, 1};
+            if (in.byte() % 2) glGenQueries(in.small(-1, 4), names);
+            else glDeleteQueries(in.small(-1, 4), names);
+            break;
+          }
+          case 5: glBeginQuery(in.any_enum(), GLuint(in.small(0, 4))); break;
+          case 6: glEndQuery(in.any_enum()); break;
+          default:
+            (void)glIsQuery(GLuint(in.small(0, 4)));
+            glGetQueryiv(in.any_enum(), in.any_enum(), reinterpret_cast<GLint*>(b->out));
+            glGetQueryObjectiv(GLuint(in.small(0, 4)), in.any_enum(), reinterpret_cast<GLint*>(b->out));
+            glGetQueryObjectuiv(GLuint(in.small(0, 4)), in.any_enum(), reinterpret_cast<GLuint*>(b->out));
+            break;
+        }
+        break;
       case 25: glDepthFunc(in.any_enum()); break;
       case 26: glStencilFunc(in.any_enum(), in.small(-2, 300), GLuint(in.byte())); break;
       case 27: glStencilOp(in.any_enum(), in.any_enum(), in.any_enum()); break;
@@ -237,16 +281,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       case 30: {  // arrays: pointers into our buffers, strides that stay inside them
-        int which = in.byte() % 4, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
+        int which = in.byte() % 6, sz = in.small(1, 4), stride = in.small(0, kMaxStride / 4) * 4;
         GLenum type = in.any_enum();
-        void* p = b->arrays[which];
+        void* p = b->arrays[which % 4];
         // Or an offset into a buffer object (GL 1.5), of any size, bound or not.
         if (in.byte() % 4 == 0) glBindBuffer(GL_ARRAY_BUFFER, GLuint(in.small(0, 3)));
         if (array_buffer_bound()) p = reinterpret_cast<void*>(std::uintptr_t(in.small(0, 64) * 4));
         if (which == 0) glVertexPointer(sz, type, stride, p);
         else if (which == 1) glNormalPointer(type, stride, p);
         else if (which == 2) glColorPointer(sz, type, stride, p);
-        else glTexCoordPointer(sz, type, stride, p);
+        else if (which == 3) glTexCoordPointer(sz, type, stride, p);
+        else if (which == 4) glSecondaryColorPointer(sz, type, stride, p);
+        else glFogCoordPointer(type, stride, p);
         break;
       }
       case 31:
@@ -330,6 +376,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                      in.small(-1, kMaxImage), in.small(0, 1), in.any_enum(), in.any_enum(), b->pixels);
         glTexParameteri(GL_TEXTURE_2D, in.any_enum(), GLint(in.any_enum()));
         glTexEnvi(in.any_enum(), in.any_enum(), GLint(in.any_enum()));
+        // Numeric parameters (LOD clamps and biases, levels), a mipmap generation hint.
+        glTexParameterf(GL_TEXTURE_2D, in.any_enum(), in.byte() % 2 ? in.number() : float(in.small(-2, 20)));
+        glTexEnvf(in.any_enum(), in.any_enum(), in.number());
+        glHint(in.any_enum(), in.any_enum());
         if (in.byte() % 4 == 0) glDeleteTextures(1, &name);
         break;
       }
@@ -384,12 +434,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         }
         break;
       }
-      case 46: {  // fog parameters through every form
+      case 46: {  // fog and point parameters through every form
         for (float& v : f) v = in.number();
         const GLint iv[4] = {GLint(in.any_enum()), in.small(-3, 3) << 29, in.small(-100, 100), 0x7fffffff};
         const GLenum pname = in.any_enum();
-        if (in.byte() % 2) glFogfv(pname, f), glFogf(pname, f[0]);
-        else glFogiv(pname, iv), glFogi(pname, iv[0]);
+        const int form = in.byte() % 6;
+        if (form < 2) glFogfv(pname, f), glFogf(pname, f[0]);
+        else if (form < 4) glFogiv(pname, iv), glFogi(pname, iv[0]);
+        else if (form == 4) glPointParameterfv(pname, f), glPointParameterf(pname, f[0]), glPointSize(f[1]);
+        else glPointParameteriv(pname, iv), glPointParameteri(pname, iv[0]);
         break;
       }
       case 47: glScissor(in.small(-40, 40), in.small(-40, 40), in.small(-2, 80), in.small(-2, 80)); break;
@@ -410,6 +463,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 60:
         glTexSubImage2D(in.any_enum(), in.small(-1, 4), in.small(-2, kMaxImage), in.small(-2, kMaxImage),
                         in.small(-1, kMaxImage), in.small(-1, kMaxImage), in.any_enum(), in.any_enum(), b->pixels);
+        // 3D images (at most 6 x 6 x 5 with a border) and sub-images.
+        glBindTexture(GL_TEXTURE_3D, in.byte() % 4);
+        glTexImage3D(in.byte() % 2 ? GLenum(GL_TEXTURE_3D) : in.any_enum(), in.small(-1, 3), GLint(in.any_enum()),
+                     in.small(-1, 4), in.small(-1, 4), in.small(-1, 3), in.small(0, 1), in.any_enum(), in.any_enum(),
+                     in.byte() % 8 ? b->pixels : nullptr);
+        glTexSubImage3D(in.byte() % 2 ? GLenum(GL_TEXTURE_3D) : in.any_enum(), in.small(-1, 3), in.small(-2, 4),
+                        in.small(-2, 4), in.small(-2, 3), in.small(-1, 4), in.small(-1, 4), in.small(-1, 3),
+                        in.any_enum(), in.any_enum(), b->pixels);
+        glCopyTexSubImage3D(GL_TEXTURE_3D, in.small(-1, 3), in.small(-2, 4), in.small(-2, 4), in.small(-2, 3),
+                            in.small(-20, kSize), in.small(-20, kSize), in.small(-1, 4), in.small(-1, 4));
         break;
       case 61:  // copies from the framebuffer, inside it or not
         glCopyTexImage2D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-20, kSize), in.small(-20, kSize),

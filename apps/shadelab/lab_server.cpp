@@ -9,6 +9,7 @@
 #include <httplib.h>
 
 #include <chrono>
+#include <exception>
 #include <cstdio>
 #include <filesystem>
 #include <thread>
@@ -86,7 +87,15 @@ class Lab {
       return send_error(res, 408, "the request's body took longer than the lab's limit of " +
                                       std::to_string(options_.max_request_seconds) + " s");
     }
-    const bool ran = queue_->run(req.remote_addr, [&] { (this->*handler)(req, body, res); });
+    std::exception_ptr error;  // a render's exception goes to the server's handler (500), as before
+    const bool ran = queue_->run(req.remote_addr, [&] {
+      try {
+        (this->*handler)(req, body, res);
+      } catch (...) {
+        error = std::current_exception();
+      }
+    });
+    if (error) std::rethrow_exception(error);
     if (!ran) {
       res.set_header("Retry-After", "1");
       send_error(res, 503, "the lab is busy: " + std::to_string(options_.max_queued_renders) +

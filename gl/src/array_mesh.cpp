@@ -20,7 +20,7 @@ namespace shadelab::gl {
 
 bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from_elements, std::size_t count,
                      const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
-                     const ElementLoader& load) {
+                     const ElementLoader& load, const ExtraLoader* extra) {
   const LightingState& l = c.lighting;
   bool flat = l.shade_model == GL_FLAT;
   // Flat quads and polygons may be provoked by a vertex outside a triangle, and colour
@@ -47,6 +47,12 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   m.texcoords.resize(texture ? n : 0);
   m.raw_texcoords.resize(texture ? n : 0);
   m.finite.resize(n);
+  // GL 1.4: the secondary colours the colour sum adds to unlit colours (GL_COLOR_SUM).
+  const bool sum = !l.enabled && c.fog.color_sum;
+  m.secondary.resize(sum ? n : 0);
+  // ... and the fog coordinates fog uses instead of the eye distance (GL_FOG_COORDINATE).
+  const bool fog_coords = c.fog.by_coordinates();
+  m.fog.resize(fog_coords ? n : 0);
   const glm::mat4& projection = c.projection.top();
   make_pipeline(c);
   // Ranges of vertices on the pipeline's threads (the loader only reads the arrays).
@@ -59,6 +65,12 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
     load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], l.enabled ? nullptr : &m.colors[begin],
          texture ? &m.raw_texcoords[begin] : nullptr);
+    if (sum || fog_coords) {
+      const ExtraOutputs out{sum ? &m.secondary[begin] : nullptr, fog_coords ? &m.fog[begin] : nullptr};
+      if (extra) (*extra)(lo + begin, end - begin, out);
+      if (!extra && sum) std::fill_n(out.secondary, end - begin, glm::vec3(c.current.secondary));
+      if (!extra && fog_coords) std::fill_n(out.fog, end - begin, c.current.fog_coord);
+    }
     for (std::size_t v = begin; v < end; ++v) {
       glm::vec4 eye = transform(p.modelview, m.positions[v]);
       if (eye.w != 1.0f) homogeneous = true;
@@ -68,6 +80,9 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
       if (!m.finite[v]) nonfinite = true;
       if (l.enabled) m.normals[v] = eye_normal(c, m.normals[v]);
       else m.colors[v] = glm::clamp(sanitize(m.colors[v]), glm::vec4(0.0f), glm::vec4(1.0f));
+      if (sum) m.secondary[v] = glm::clamp(sanitize(m.secondary[v]), glm::vec3(0.0f), glm::vec3(1.0f));
+      // Mesa's fixed-function vertex program passes the coordinate's absolute value on.
+      if (fog_coords) m.fog[v] = std::fabs(m.fog[v]);
       if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
     }
   });
@@ -141,8 +156,10 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.normals = m.normals;
   in.colors = m.colors;
   in.texcoords = m.texcoords;
+  in.secondary_colors = m.secondary;
+  in.fog_coords = m.fog;
   in.triangles = triangles;
-  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
   // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
   const Viewport& vp = c.raster.viewport;

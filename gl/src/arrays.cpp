@@ -1,7 +1,8 @@
-// Vertex arrays (GL 1.1 section 2.8): the array pointers, glArrayElement, glDrawArrays,
-// glDrawElements, GL 1.2's glDrawRangeElements, GL 1.4's glMultiDrawArrays and
-// glMultiDrawElements, and GL 1.5's arrays and indices in buffer objects (section 2.9, read in
-// place). Each element becomes current attributes plus a vertex, exactly as the
+// Vertex arrays (GL 1.1 section 2.8): the array pointers (GL 1.4's secondary colour and fog
+// coordinate arrays too), glArrayElement, glDrawArrays, glDrawElements, GL 1.2's
+// glDrawRangeElements, GL 1.4's glMultiDrawArrays and glMultiDrawElements, and GL 1.5's arrays
+// and indices in buffer objects (section 2.9, read in place). Each element becomes current
+// attributes plus a vertex, exactly as the
 // equivalent glBegin/glEnd sequence (which is how GL 1.1 defines them); draw.cpp does the rest,
 // or array_mesh.cpp draws the whole array in one go where that gives the same result.
 #include <algorithm>
@@ -88,14 +89,14 @@ class ResolvedArrays {
   explicit ResolvedArrays(GlContext& c) : c_(c) {
     ClientArrays& a = c.arrays;
     bool any = false;
-    for (ClientArray* array : each(a)) {
+    for (ClientArray* array : a.all()) {
       if (!array->enabled || !array->buffer) continue;
       any = true;
     }
     if (!any) return;
     saved_ = a;
     swapped_ = true;
-    for (ClientArray* array : each(a)) {
+    for (ClientArray* array : a.all()) {
       if (!array->enabled || !array->buffer) continue;
       const std::vector<unsigned char>& data = array->buffer->data;
       const std::size_t offset = reinterpret_cast<std::uintptr_t>(array->pointer);
@@ -115,9 +116,6 @@ class ResolvedArrays {
   std::size_t limit() const { return limit_; }
 
  private:
-  static std::array<ClientArray*, 6> each(ClientArrays& a) {
-    return {&a.vertex, &a.normal, &a.color, &a.texcoord, &a.index, &a.edge_flag};
-  }
   GlContext& c_;
   ClientArrays saved_;
   bool swapped_ = false;
@@ -148,6 +146,27 @@ glm::vec4 fetch(const ClientArray& a, std::size_t i, glm::vec4 fill, Norm norm) 
   return fill;
 }
 
+// Element i of the secondary colour array (GL 1.4 section 2.8): red, green and blue (a fourth
+// component is read by no one), alpha 1 as glSecondaryColor3 leaves it.
+glm::vec4 secondary_element(const ClientArray& a, std::size_t i, Norm norm) {
+  glm::vec4 v = fetch(a, i, glm::vec4(0, 0, 0, 1), norm);
+  v.a = 1.0f;
+  return v;
+}
+
+// GL 1.4's attributes of a draw's elements (draw_array_mesh's ExtraLoader): from their arrays
+// as a draw converts them, or the current values.
+void load_extra(const GlContext& c, std::size_t first, std::size_t n, const ExtraOutputs& out) {
+  const ClientArrays& a = c.arrays;
+  for (std::size_t v = 0; out.secondary && v < n; ++v) {
+    out.secondary[v] = glm::vec3(usable(a.secondary_color) ? secondary_element(a.secondary_color, first + v, Norm::kDraw)
+                                                           : c.current.secondary);
+  }
+  for (std::size_t v = 0; out.fog && v < n; ++v) {
+    out.fog[v] = usable(a.fog_coord) ? component(a.fog_coord, first + v, 0, Norm::kDirect) : c.current.fog_coord;
+  }
+}
+
 // glArrayElement's effect (GL 1.1 section 2.8): attributes first, the vertex last. `norm`:
 // how colours and normals convert (kSpec for glArrayElement itself, kDraw within a draw).
 void array_element(GlContext& c, std::size_t i, Norm norm) {
@@ -160,6 +179,8 @@ void array_element(GlContext& c, std::size_t i, Norm norm) {
     apply_color_material(c);
   }
   if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect);
+  if (usable(a.secondary_color)) c.current.secondary = secondary_element(a.secondary_color, i, norm);
+  if (usable(a.fog_coord)) c.current.fog_coord = component(a.fog_coord, i, 0, Norm::kDirect);
   if (usable(a.vertex) && c.prim.active) emit_vertex(c, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect));
 }
 
@@ -224,7 +245,13 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
   // An element past the end of a buffer the arrays read: nothing is drawn (nothing is read
   // outside a buffer).
   if (count > 0 && hi >= limit) return;
-  if (draw_array_mesh(c, mode, usable(a.color), from_elements, count, read_direct ? direct : nullptr, lo, hi, load)) return;
+  const ExtraLoader extra = [&](std::size_t first, std::size_t n, const ExtraOutputs& out) {
+    load_extra(c, first, n, out);
+  };
+  if (draw_array_mesh(c, mode, usable(a.color), from_elements, count, read_direct ? direct : nullptr, lo, hi, load,
+                      &extra)) {
+    return;
+  }
   CurrentAttribs saved = c.current;
   Material front = c.lighting.front, back = c.lighting.back;
   begin_primitive(c, mode);
@@ -306,7 +333,7 @@ void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei 
 // and normals converted as `norm` says (as the command being recorded converts them).
 void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, const auto& index_of) {
   const ClientArrays& a = c.arrays;
-  std::vector<float> normals, colors, texcoords, positions, edges;
+  std::vector<float> normals, colors, texcoords, positions, edges, secondary, fog;
   auto put = [](std::vector<float>& out, const glm::vec4& v, int n) {
     for (int k = 0; k < n; ++k) out.push_back(v[k]);
   };
@@ -317,6 +344,8 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
     if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
     if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
     if (usable(a.edge_flag)) edges.push_back(component(a.edge_flag, i, 0, Norm::kDirect));
+    if (usable(a.secondary_color)) put(secondary, secondary_element(a.secondary_color, i, norm), 3);
+    if (usable(a.fog_coord)) fog.push_back(component(a.fog_coord, i, 0, Norm::kDirect));
   }
   w.scalar(std::uint64_t(count));
   w.array(usable(a.normal) ? normals.data() : nullptr, normals.size());
@@ -324,6 +353,8 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
   w.array(usable(a.texcoord) ? texcoords.data() : nullptr, texcoords.size());
   w.array(usable(a.vertex) ? positions.data() : nullptr, positions.size());
   w.array(usable(a.edge_flag) ? edges.data() : nullptr, edges.size());
+  w.array(usable(a.secondary_color) ? secondary.data() : nullptr, secondary.size());
+  w.array(usable(a.fog_coord) ? fog.data() : nullptr, fog.size());
 }
 
 // A draw in a display list: its mode and elements. Drawn only if the vertex array is enabled,
@@ -356,6 +387,8 @@ void specify(GlContext& c, const RecordedElements& e, std::uint64_t k) {
     c.current.texcoord = glm::vec4(t[0], t[1], t[2], t[3]);
   }
   if (e.edges) c.current.edge_flag = e.edges[k];
+  if (e.secondary) c.current.secondary = glm::vec4(e.secondary[3 * k], e.secondary[3 * k + 1], e.secondary[3 * k + 2], 1.0f);
+  if (e.fog) c.current.fog_coord = e.fog[k];
   if (e.positions && c.prim.active) {
     const float* p = &e.positions[4 * k];
     emit_vertex(c, glm::vec4(p[0], p[1], p[2], p[3]));
@@ -480,6 +513,18 @@ void exec::TexCoordPointer(GlContext& c, GLint size, GLenum type, GLsizei stride
 
 void exec::IndexPointer(GlContext& c, GLenum type, GLsizei stride, const void* ptr) {
   set_pointer(c, c.arrays.index, 1, type, stride, ptr, 1, 1, {GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+}
+
+// GL 1.4 section 2.8. Sizes 3 and 4, as Mesa accepts them (GL 1.4 allows 3 only).
+void exec::SecondaryColorPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.secondary_color, size, type, stride, ptr, 3, 4,
+              {GL_BYTE, GL_UNSIGNED_BYTE, GL_SHORT, GL_UNSIGNED_SHORT, GL_INT, GL_UNSIGNED_INT,
+               GL_FLOAT, GL_DOUBLE});
+}
+
+// GL 1.4 section 2.8: one float or double per element.
+void exec::FogCoordPointer(GlContext& c, GLenum type, GLsizei stride, const void* ptr) {
+  set_pointer(c, c.arrays.fog_coord, 1, type, stride, ptr, 1, 1, {GL_FLOAT, GL_DOUBLE});
 }
 
 void exec::EdgeFlagPointer(GlContext& c, GLsizei stride, const void* ptr) {

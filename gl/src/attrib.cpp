@@ -19,6 +19,7 @@ namespace {
 constexpr GLenum kCapabilities[] = {
     GL_ALPHA_TEST, GL_AUTO_NORMAL, GL_BLEND, GL_CLIP_PLANE0, GL_CLIP_PLANE1, GL_CLIP_PLANE2,
     GL_CLIP_PLANE3, GL_CLIP_PLANE4, GL_CLIP_PLANE5, GL_COLOR_LOGIC_OP, GL_COLOR_MATERIAL,
+    GL_COLOR_SUM,
     GL_CULL_FACE, GL_DEPTH_TEST, GL_DITHER, GL_FOG, GL_INDEX_LOGIC_OP, GL_LIGHTING,
     GL_LINE_SMOOTH, GL_LINE_STIPPLE, GL_MAP1_COLOR_4, GL_MAP1_INDEX, GL_MAP1_NORMAL,
     GL_MAP1_TEXTURE_COORD_1, GL_MAP1_TEXTURE_COORD_2, GL_MAP1_TEXTURE_COORD_3,
@@ -27,16 +28,19 @@ constexpr GLenum kCapabilities[] = {
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
     // GL 1.3
     GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
 };
 
-// The parameters of a texture object that the texture group holds (table 6.15), nine floats.
-constexpr GLenum kTextureParameters[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,
-                                         GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
-                                         GL_TEXTURE_PRIORITY,   GL_TEXTURE_BORDER_COLOR};
-constexpr std::size_t kTextureParameterFloats = 9;
+// The parameters of a texture object that the texture group holds (GL 1.5 table 6.19),
+// sixteen floats.
+constexpr GLenum kTextureParameters[] = {
+    GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,  GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
+    GL_TEXTURE_WRAP_R,     GL_TEXTURE_PRIORITY,    GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_MIN_LOD,
+    GL_TEXTURE_MAX_LOD,    GL_TEXTURE_BASE_LEVEL,  GL_TEXTURE_MAX_LEVEL,  GL_TEXTURE_LOD_BIAS,
+    GL_GENERATE_MIPMAP};
+constexpr std::size_t kTextureParameterFloats = 16;
 
 // Runs a GL command for its effect on state the stack saves, leaving the error flag as it was:
 // true if the command raised no error (a texture target not implemented raises one).
@@ -50,7 +54,7 @@ bool quietly(GlContext& c, F&& f) {
   return ok;
 }
 
-void read_texture_parameters(GlContext& c, GLenum target, std::array<float, 9>& out) {
+void read_texture_parameters(GlContext& c, GLenum target, std::array<float, kTextureParameterFloats>& out) {
   std::size_t k = 0;
   for (GLenum pname : kTextureParameters) {
     exec::GetTexParameterfv(c, target, pname, &out[k]);
@@ -58,7 +62,7 @@ void read_texture_parameters(GlContext& c, GLenum target, std::array<float, 9>& 
   }
 }
 
-void write_texture_parameters(GlContext& c, GLenum target, const std::array<float, 9>& in) {
+void write_texture_parameters(GlContext& c, GLenum target, const std::array<float, kTextureParameterFloats>& in) {
   std::size_t k = 0;
   for (GLenum pname : kTextureParameters) {
     exec::TexParameterfv(c, target, pname, &in[k]);
@@ -89,7 +93,8 @@ void restore_enables(GlContext& c, const AttribRecord& r, const Which& which) {
 void save_textures(GlContext& c, AttribRecord& r) {
   static_assert(kTextureParameterFloats == std::tuple_size_v<decltype(AttribRecord::TextureTarget::bound)>);
   const std::pair<GLenum, GLenum> targets[] = {{GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
-                                               {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D}};
+                                               {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
+                                               {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D}};
   for (const std::pair<GLenum, GLenum>& tb : targets) {
     // (Not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)
     const GLenum target = tb.first, binding = tb.second;
@@ -124,6 +129,7 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
   }
   c.textures.env_mode = r.textures.env_mode;
   c.textures.env_color = r.textures.env_color;
+  c.textures.lod_bias = r.textures.lod_bias;
   // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
   // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
   for (std::size_t i = 0; i < c.textures.gen.size(); ++i) {
@@ -132,7 +138,8 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
     c.textures.gen[i].eye_plane = r.textures.gen[i].eye_plane;
   }
   restore_enables(c, r, [](GLenum cap) {
-    return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
+    return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || cap == GL_TEXTURE_3D ||
+           (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
   });
 }
 
@@ -147,6 +154,10 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.blend = s.blend;
   d.blend_src = s.blend_src;
   d.blend_dst = s.blend_dst;
+  d.blend_src_alpha = s.blend_src_alpha;
+  d.blend_dst_alpha = s.blend_dst_alpha;
+  d.blend_equation = s.blend_equation;
+  d.blend_color = s.blend_color;
   d.dither = s.dither;
   d.alpha_test = s.alpha_test;
   d.alpha_func = s.alpha_func;
@@ -228,6 +239,10 @@ void restore_line(GlContext& c, const AttribRecord& r) {
 void restore_point(GlContext& c, const AttribRecord& r) {
   c.prims.point_size = r.prims.point_size;
   c.prims.point_smooth = r.prims.point_smooth;
+  c.prims.point_min = r.prims.point_min;  // GL 1.4's point parameters (table 6.11)
+  c.prims.point_max = r.prims.point_max;
+  c.prims.point_fade = r.prims.point_fade;
+  c.prims.point_attenuation = r.prims.point_attenuation;
 }
 
 void restore_polygon(GlContext& c, const AttribRecord& r) {

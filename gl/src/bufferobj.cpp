@@ -56,7 +56,7 @@ void unbind_everywhere(GlContext& c, const BufferObject* object) {
   // An array's binding reads 0 from now on; it keeps the object, so that a draw from it reads
   // the orphaned store rather than the offset as an address (the specification leaves that
   // draw undefined).
-  for (ClientArray* array : {&a.vertex, &a.normal, &a.color, &a.texcoord, &a.index, &a.edge_flag}) {
+  for (ClientArray* array : a.all()) {
     if (array->buffer.get() == object) array->buffer_name = 0;
   }
 }

@@ -16,11 +16,11 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   }
   // GL's default back material equals the front one; both are Material's defaults.
   // Each target's default texture (name 0), with the target's dimensions.
-  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D}) {
+  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D}) {
     TextureBinding& b = textures.binding(target);
     b.default_object = std::make_shared<TextureObject>();
     b.default_object->target = target;
-    b.default_object->texture.dimensions = target == GL_TEXTURE_1D ? 1 : 2;
+    b.default_object->texture.dimensions = texture_dimensions(target);
     b.object = b.default_object;
   }
   textures.names = share ? share->textures.names : std::make_shared<TextureNames>();

@@ -3,7 +3,7 @@
 // rule; the exec:: functions of the GL commands change it, draw.cpp hands primitives to the
 // core pipeline. The larger features keep their state in their own headers, included here
 // (texture_state.hpp, vertex_state.hpp, pixel_state.hpp, dlist_state.hpp, eval_state.hpp,
-// feedback_state.hpp).
+// feedback_state.hpp, query_state.hpp).
 // No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
 #pragma once
 
@@ -29,6 +29,7 @@
 #include "gl/src/eval_state.hpp"
 #include "gl/src/feedback_state.hpp"
 #include "gl/src/pixel_state.hpp"
+#include "gl/src/query_state.hpp"
 #include "gl/src/texture_state.hpp"
 #include "gl/src/vertex_state.hpp"
 #include "shadelab/detail/default_init.hpp"
@@ -47,6 +48,8 @@ inline constexpr int kMaxProjectionDepth = 32;
 inline constexpr int kMaxTextureStackDepth = 10;
 inline constexpr int kMaxTextureSize = 16384;  // as llvmpipe's
 inline constexpr int kMaxTextureLevels = 15;    // levels 0 .. log2(kMaxTextureSize)
+inline constexpr int kMax3dTextureSize = 2048;  // GL_MAX_3D_TEXTURE_SIZE, as llvmpipe's
+inline constexpr int kMax3dTextureLevels = 12;  // levels 0 .. log2(kMax3dTextureSize)
 inline constexpr int kMaxViewportDim = 16384;
 inline constexpr int kMaxBufferDim = 16384;  // OSMESA_MAX_WIDTH / OSMESA_MAX_HEIGHT
 
@@ -79,6 +82,10 @@ struct CurrentAttribs {
   glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
   float index = 1.0f;      // GL_CURRENT_INDEX: kept, colours nothing in an RGBA context
   float edge_flag = 1.0f;  // GL_EDGE_FLAG as given (GL_TRUE only when exactly 1, as Mesa's)
+  // GL 1.4 section 2.7: GL_CURRENT_SECONDARY_COLOR (glSecondaryColor3* sets red, green and
+  // blue; alpha stays 1, as Mesa's) and GL_CURRENT_FOG_COORDINATE.
+  glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};
+  float fog_coord = 0.0f;
 };
 
 /// Per-fragment operations and the framebuffer controls, kept as GL enums (what glGet
@@ -89,7 +96,12 @@ struct RasterState {
   GLenum depth_func = GL_LESS;
   bool depth_mask = true;
   bool blend = false;
-  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;
+  GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // the colour factors (GL_BLEND_SRC_RGB, ...)
+  // GL 1.4 (section 4.1.7): glBlendFuncSeparate's alpha factors, glBlendEquation, and
+  // glBlendColor's constant, clamped to [0, 1] when given.
+  GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
+  GLenum blend_equation = GL_FUNC_ADD;
+  glm::vec4 blend_color{0.0f};
   bool cull = false;
   GLenum cull_mode = GL_BACK;
   GLenum front_face = GL_CCW;
@@ -140,17 +152,30 @@ struct FogSettings {
   glm::vec4 color{0.0f};  // clamped to [0, 1]
   float density = 1.0f, start = 0.0f, end = 1.0f;
   float index = 0.0f;  // GL_FOG_INDEX: stored and reported (colour-index mode only)
+  // GL 1.4: GL_FOG_COORDINATE_SOURCE (section 3.10: the per-vertex fog coordinate or the
+  // fragment's eye distance) and GL_COLOR_SUM (section 3.9: the secondary colour added to
+  // the primary when lighting is off), both in the fog attribute group.
+  GLenum coord_source = GL_FRAGMENT_DEPTH;
+  bool color_sum = false;
+  /// Whether fragments are fogged by the vertices' fog coordinates (GL_FOG_COORDINATE source).
+  bool by_coordinates() const { return enabled && coord_source == GL_FOG_COORDINATE; }
 };
 
 // Mesa's limits for points and lines (glGet GL_POINT_SIZE_RANGE, GL_LINE_WIDTH_RANGE and
 // their granularity) and its number of user clip planes.
 inline constexpr float kMaxPointSize = 255.0f, kMaxLineWidth = 255.0f, kSizeGranularity = 0.1f;
+// The least derived size of an attenuated point (Mesa's MinPointSize: the vertex program's clamp).
+inline constexpr float kMinPointSize = 1.0f;
 inline constexpr int kMaxClipPlanes = 8;
 
 /// Points, lines, the polygon modes and the user clip planes (GL 1.1 sections 2.11, 3.3-3.5).
 struct PrimState {
   GLfloat point_size = 1.0f;
   bool point_smooth = false;
+  // glPointParameter (GL 1.4 section 3.3): the derived size's clamps, the fade threshold
+  // (stored and reported) and the distance attenuation coefficients (a, b, c).
+  GLfloat point_min = 0.0f, point_max = kMaxPointSize, point_fade = 1.0f;
+  glm::vec3 point_attenuation{1.0f, 0.0f, 0.0f};
   GLfloat line_width = 1.0f;
   bool line_smooth = false, line_stipple = false;
   GLushort stipple_pattern = 0xffff;
@@ -176,6 +201,7 @@ struct MultisampleState {
 /// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
 struct PixelStore {
   GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
+  GLint image_height = 0, skip_images = 0;  // GL 1.2: 3D images (section 3.6.4)
   bool swap_bytes = false, lsb_first = false;
 };
 
@@ -198,11 +224,16 @@ struct ClientArrays {
     return a;
   }
   ClientArray vertex, normal = initial(3), color, texcoord;
+  ClientArray secondary_color = initial(3), fog_coord = initial(1);  // GL 1.4 section 2.8
   ClientArray index = initial(1);                        // colour indices: current index only
   ClientArray edge_flag = initial(1, GL_UNSIGNED_BYTE);  // GLboolean elements
   // GL 1.5: GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER (vertex-array client state).
   std::shared_ptr<BufferObject> array_buffer, element_buffer;
   GLuint array_buffer_name = 0, element_buffer_name = 0;
+  /// Every array, for what applies to all of them (buffers read in place, deleted buffers).
+  std::array<ClientArray*, 8> all() {
+    return {&vertex, &normal, &color, &texcoord, &secondary_color, &fog_coord, &index, &edge_flag};
+  }
 };
 
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
@@ -255,10 +286,10 @@ struct AttribRecord {
   struct TextureTarget {
     GLenum target = 0;
     GLuint name = 0;
-    std::array<float, 9> bound{}, defaults{};
+    std::array<float, 16> bound{}, defaults{};  // attrib.cpp's kTextureParameters
   };
   std::vector<TextureTarget> texture_targets;
-  std::array<GLenum, 6> hints{};
+  std::array<GLenum, 7> hints{};
   GLenum matrix_mode = GL_MODELVIEW;
   GLuint list_base = 0;
   RasterPosition raster_pos;  // current group (table 6.5)
@@ -318,16 +349,17 @@ struct GlContext {
   GLenum render_mode = GL_RENDER;  // glRenderMode (feedback.cpp)
   SelectionState selection;
   FeedbackState feedback;
+  QueryState queries;  // glBeginQuery (queryobj.cpp)
   RenderModeObserver render_mode_observer{*this};
   std::vector<AttribRecord> attrib_stack;              // glPushAttrib
   std::vector<ClientAttribRecord> client_attrib_stack;  // glPushClientAttrib
   Primitive prim;
   ArrayScratch array_scratch;
   ImmediateScratch immediate_scratch;
-  // glHint's targets in hint_slot's order (state.cpp); the last is GL 1.3's
-  // GL_TEXTURE_COMPRESSION_HINT (accepted, no compression either way).
-  std::array<GLenum, 6> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
-                              GL_DONT_CARE};
+  // glHint, by state.cpp's hint_slot: the GL 1.1 hints, then GL_GENERATE_MIPMAP_HINT (1.4) and
+  // GL 1.3's GL_TEXTURE_COMPRESSION_HINT (accepted, no compression either way).
+  std::array<GLenum, 7> hints{GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE,
+                              GL_DONT_CARE, GL_DONT_CARE, GL_DONT_CARE};
 
   GLenum matrix_mode = GL_MODELVIEW;
   MatrixStack modelview{{glm::mat4(1.0f)}, kMaxModelviewDepth};

@@ -1,7 +1,7 @@
 // The current vertex attributes (GL 1.1 section 2.7): glColor*, glNormal3*, glTexCoord*,
-// glIndex* and glEdgeFlag* in every type and size. Each converts its arguments (table 2.6 for
-// colours and normals) and records them in GlContext::current; nothing is drawn here (a vertex
-// takes them in draw.cpp's emit_vertex).
+// glIndex* and glEdgeFlag* in every type and size, GL 1.4's glSecondaryColor3* and glFogCoord*. Each
+// converts its arguments (table 2.6 for colours and normals) and records them in
+// GlContext::current; nothing is drawn here (a vertex takes them in draw.cpp's emit_vertex).
 #include <type_traits>
 
 #include "gl/generated/exec.hpp"
@@ -56,6 +56,28 @@ template <class T>
 void texcoord_v(GlContext& c, const T* v, int n) {
   if (!v) return c.set_error(GL_INVALID_VALUE);
   texcoord(c, double(v[0]), n > 1 ? double(v[1]) : 0.0, n > 2 ? double(v[2]) : 0.0, n > 3 ? double(v[3]) : 1.0);
+}
+
+// The current secondary colour (GL 1.4 section 2.7): red, green and blue converted as
+// glColor's (table 2.6); alpha is kept at 1, as Mesa keeps it.
+template <class T>
+void secondary3(GlContext& c, T r, T g, T b) {
+  c.current.secondary = glm::vec4(color_component(r), color_component(g), color_component(b), 1.0f);
+}
+
+template <class T>
+void secondary_v(GlContext& c, const T* v) {
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  secondary3(c, v[0], v[1], v[2]);
+}
+
+// The current fog coordinate (GL 1.4 section 2.7), as given.
+void fog_coord(GlContext& c, double f) { c.current.fog_coord = float(f); }
+
+template <class T>
+void fog_coord_v(GlContext& c, const T* v) {
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  fog_coord(c, double(v[0]));
 }
 
 // The colour index: stored and reported in an RGBA context, where it colours nothing
@@ -160,6 +182,28 @@ void exec::Indexiv(GlContext& c, const GLint* v) { index_v(c, v); }
 void exec::Indexfv(GlContext& c, const GLfloat* v) { index_v(c, v); }
 void exec::Indexdv(GlContext& c, const GLdouble* v) { index_v(c, v); }
 void exec::Indexubv(GlContext& c, const GLubyte* v) { index_v(c, v); }
+
+void exec::SecondaryColor3b(GlContext& c, GLbyte r, GLbyte g, GLbyte b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3s(GlContext& c, GLshort r, GLshort g, GLshort b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3i(GlContext& c, GLint r, GLint g, GLint b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3f(GlContext& c, GLfloat r, GLfloat g, GLfloat b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3d(GlContext& c, GLdouble r, GLdouble g, GLdouble b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3ub(GlContext& c, GLubyte r, GLubyte g, GLubyte b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3us(GlContext& c, GLushort r, GLushort g, GLushort b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3ui(GlContext& c, GLuint r, GLuint g, GLuint b) { secondary3(c, r, g, b); }
+void exec::SecondaryColor3bv(GlContext& c, const GLbyte* v) { secondary_v(c, v); }
+void exec::SecondaryColor3sv(GlContext& c, const GLshort* v) { secondary_v(c, v); }
+void exec::SecondaryColor3iv(GlContext& c, const GLint* v) { secondary_v(c, v); }
+void exec::SecondaryColor3fv(GlContext& c, const GLfloat* v) { secondary_v(c, v); }
+void exec::SecondaryColor3dv(GlContext& c, const GLdouble* v) { secondary_v(c, v); }
+void exec::SecondaryColor3ubv(GlContext& c, const GLubyte* v) { secondary_v(c, v); }
+void exec::SecondaryColor3usv(GlContext& c, const GLushort* v) { secondary_v(c, v); }
+void exec::SecondaryColor3uiv(GlContext& c, const GLuint* v) { secondary_v(c, v); }
+
+void exec::FogCoordf(GlContext& c, GLfloat f) { fog_coord(c, f); }
+void exec::FogCoordd(GlContext& c, GLdouble f) { fog_coord(c, f); }
+void exec::FogCoordfv(GlContext& c, const GLfloat* v) { fog_coord_v(c, v); }
+void exec::FogCoorddv(GlContext& c, const GLdouble* v) { fog_coord_v(c, v); }
 
 // The edge flag (section 2.6.2) is kept as the number given, as Mesa keeps it: GL_EDGE_FLAG
 // reads GL_TRUE only for exactly 1 (glEdgeFlag(2) reads back GL_FALSE there too).

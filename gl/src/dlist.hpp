@@ -116,13 +116,17 @@ class ListReader {
 struct RecordedElements {
   std::uint64_t count;
   const float *normals, *colors, *texcoords, *positions, *edges;
+  const float* secondary;  // GL 1.4: red, green and blue per element
+  const float* fog;        // GL 1.4: the fog coordinate per element
   explicit RecordedElements(ListReader& r)
       : count(r.scalar<std::uint64_t>()),
         normals(r.array<float>()),
         colors(r.array<float>()),
         texcoords(r.array<float>()),
         positions(r.array<float>()),
-        edges(r.array<float>()) {}
+        edges(r.array<float>()),
+        secondary(r.array<float>()),
+        fog(r.array<float>()) {}
 };
 
 /// While a command is compiled: runs its saver (out of memory becomes GL_OUT_OF_MEMORY) and

@@ -127,7 +127,9 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
     }
     if (op == Opcode::kArrayElements) {
       const RecordedElements e(r);
-      if (e.edges) return 0;  // edge flags per vertex: a mesh keeps none (replayed as recorded)
+      // Edge flags, secondary colours, fog coordinates per vertex: a mesh keeps none (replayed
+      // as recorded).
+      if (e.edges || e.secondary || e.fog) return 0;
       for (std::uint64_t k = 0; k < e.count; ++k) {
         if (e.normals && !s.set(AttributeKind::kNormal, glm::vec4(glm::make_vec3(&e.normals[3 * k]), 0.0f))) return 0;
         if (e.colors && !s.set(AttributeKind::kColor, glm::make_vec4(&e.colors[4 * k]))) return 0;
@@ -146,12 +148,12 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
 }
 
 // The mesh of an ArrayDraw command (the reader after its opcode); false when its elements
-// carry edge flags, which a mesh does not keep (the command is then replayed as recorded).
+// carry edge flags, secondary colours or fog coordinates, which a mesh does not keep (the command is then replayed as recorded).
 bool array_draw_mesh(ListReader& r, ListMesh& mesh) {
   mesh.mode = r.scalar<GLenum>();
   mesh.array_draw = true;
   const RecordedElements e(r);
-  if (e.edges) return false;
+  if (e.edges || e.secondary || e.fog) return false;
   MeshBuilder b(mesh);
   b.keep(e.normals != nullptr, e.colors != nullptr, e.texcoords != nullptr);
   for (std::uint64_t k = 0; k < e.count; ++k) {

@@ -34,7 +34,9 @@ void light_vertex(const GlContext& c, const PrimitiveVertex& v, VertexColors& ou
     // Colours are clamped to [0, 1] per vertex (GL 1.1 section 2.13.6), before interpolation.
     glm::vec4 col = glm::clamp(sanitize(c.current.color), glm::vec4(0.0f), glm::vec4(1.0f));
     out.front = out.back = col;
-    out.front_secondary = out.back_secondary = glm::vec3(0.0f);
+    // The secondary colour (GL 1.4 section 2.7), clamped alike; added when GL_COLOR_SUM is on.
+    const glm::vec3 sec = glm::clamp(sanitize(glm::vec3(c.current.secondary)), glm::vec3(0.0f), glm::vec3(1.0f));
+    out.front_secondary = out.back_secondary = sec;
     return;
   }
   glm::vec3 pos = v.eye.w != 0.0f ? glm::vec3(v.eye) / v.eye.w : glm::vec3(v.eye);
@@ -56,13 +58,14 @@ struct Batch {
     for (auto* v : {&s.positions, &s.colors, &s.back_colors}) v->resize(vertices);
     for (auto* v : {&s.normals, &s.secondary, &s.back_secondary}) v->resize(vertices);
     s.texcoords.resize(vertices);
+    s.fog.resize(vertices);
     s.triangles.clear();
   }
 
   // Only what the draw reads: normals when the pipeline lights, colours when lit here (or
   // unlit), texture coordinates when textured.
   void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors,
-           const glm::vec4* texcoord) {
+           const glm::vec4* texcoord, const float* fog) {
     s.positions[i] = v.eye;
     if (normals) s.normals[i] = v.normal;
     if (colors) {
@@ -72,9 +75,10 @@ struct Batch {
       s.back_secondary[i] = colors->back_secondary;
     }
     if (texcoord) s.texcoords[i] = *texcoord;
+    if (fog) s.fog[i] = *fog;
   }
 
-  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors, const glm::vec4& texcoord) {
+  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors, const glm::vec4& texcoord, float fog) {
     s.positions.push_back(v.eye);
     s.normals.push_back(v.normal);
     s.colors.push_back(colors.front);
@@ -82,6 +86,7 @@ struct Batch {
     s.secondary.push_back(colors.front_secondary);
     s.back_secondary.push_back(colors.back_secondary);
     s.texcoords.push_back(texcoord);
+    s.fog.push_back(fog);
     return std::uint32_t(s.positions.size() - 1);
   }
 };
@@ -96,7 +101,8 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch&
   const std::uint32_t* v = t.v;
   const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
   const glm::vec4 texcoord = prim.texcoords.empty() ? glm::vec4(0, 0, 0, 1) : prim.texcoords[v[2]];
-  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord)};
+  const float fog = prim.fog_coords.empty() ? 0.0f : prim.fog_coords[v[2]];  // never flat
+  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord, fog)};
 }
 
 // Marks the window-space bounds of the batch's vertices, widened by `margin` pixels (the whole
@@ -126,7 +132,10 @@ void mark_batch(GlContext& c, const glm::mat4& projection, std::span<const glm::
 // (a smooth one's rim besides), and one for rounding.
 int prim_margin(const GlContext& c) {
   const PrimState& p = c.prims;  // sizes as drawn: clamped, a NaN as 1 (never cast unbounded)
-  const float widest = std::max(raster_size(p.point_size, 0.0f, kMaxPointSize),
+  // An attenuated point may be as large as GL_POINT_SIZE_MAX allows (GL 1.4 section 3.3).
+  const bool attenuated = p.point_attenuation != glm::vec3(1.0f, 0.0f, 0.0f);
+  const float point = attenuated ? std::max(p.point_size, p.point_max) : p.point_size;
+  const float widest = std::max(raster_size(point, 0.0f, kMaxPointSize),
                                 raster_size(p.line_width, 1.0f, kMaxLineWidth));
   return 2 + int(std::ceil(widest / 2.0f));
 }
@@ -210,7 +219,8 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
     const PrimitiveVertex& v = p.vertices[i];
-    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured ? &p.texcoords[i] : nullptr);
+    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured ? &p.texcoords[i] : nullptr,
+              p.fog_coordinates ? &p.fog_coords[i] : nullptr);
     if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
@@ -269,7 +279,10 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     in.secondary_colors = batch.s.secondary;
     if (c.lighting.model.two_side) in.back_secondary_colors = batch.s.back_secondary;
   }
+  // GL 1.4 section 3.9: unlit, the colour sum adds the vertices' secondary colours.
+  if (!l.enabled && c.fog.color_sum) in.secondary_colors = batch.s.secondary;
   if (shade.texture || p.textured) in.texcoords = batch.s.texcoords;
+  if (p.fog_coordinates) in.fog_coords = batch.s.fog;
   in.stipple_counter = &p.stipple_counter;
   if (observe) {
     FragmentState f = fragment_state(c);
@@ -278,7 +291,7 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     return;
   }
   make_pipeline(c);
-  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, nullptr,
+  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
   if (c.pipeline) mark_drawn(c);
   else
@@ -305,6 +318,7 @@ void flush_part(GlContext& c) {
   keep_ends(p.vertices, f.keep_first, f.keep_last);
   keep_ends(p.colors, f.keep_first, f.keep_last);
   keep_ends(p.texcoords, f.keep_first, f.keep_last);
+  keep_ends(p.fog_coords, f.keep_first, f.keep_last);
   keep_ends(p.edges, f.keep_first, f.keep_last);
 }
 
@@ -317,6 +331,8 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.vertices.clear();
   p.colors.clear();
   p.texcoords.clear();
+  p.fog_coords.clear();
+  p.fog_coordinates = c.fog.by_coordinates();
   p.odd_strip_start = false;
   p.in_list = c.lists.depth > 0;
   p.from_elements = false;
@@ -369,6 +385,8 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   if (p.textured) {
     p.texcoords.push_back(texcoord(c, source_texcoord(c, c.current.texcoord, object_position, eye, c.current.normal)));
   }
+  // Mesa's fixed-function vertex program passes the fog coordinate's absolute value on.
+  if (p.fog_coordinates) p.fog_coords.push_back(std::fabs(c.current.fog_coord));
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v, p.colors.emplace_back());
   if (p.edge_flags) p.edges.push_back(c.current.edge_flag != 0.0f);
@@ -382,6 +400,7 @@ void end_primitive(GlContext& c) {
   p.vertices.clear();
   p.colors.clear();
   p.texcoords.clear();
+  p.fog_coords.clear();
   p.active = false;
 }
 

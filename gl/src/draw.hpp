@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <type_traits>
 
 #include <glm/vec3.hpp>
@@ -50,6 +51,16 @@ class ElementLoader {
   void (*call_)(void*, std::size_t, std::size_t, glm::vec4*, glm::vec3*, glm::vec4*, glm::vec4*);
 };
 
+/// Where an ExtraLoader writes GL 1.4's per-vertex attributes of a range of elements: each
+/// output is null when the draw does not read that attribute.
+struct ExtraOutputs {
+  glm::vec3* secondary = nullptr;  ///< secondary colours, red, green and blue as given
+  float* fog = nullptr;            ///< fog coordinates as given
+};
+/// Loads GL 1.4's attributes of array elements first .. first + n - 1 (from their arrays, or
+/// the current values where an array is disabled).
+using ExtraLoader = std::function<void(std::size_t first, std::size_t n, const ExtraOutputs& out)>;
+
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:
 /// the draw's `count` element indices are `direct` (32-bit indices of GL_TRIANGLES, read in
 /// place) or else c.array_scratch.sequence (UINT32_MAX for one that does not fit), lo and hi
@@ -57,9 +68,9 @@ class ElementLoader {
 /// lit by the pipeline, not once per index. False, with nothing drawn, when the draw must go
 /// vertex by vertex instead (flat quads or polygons, colour material with a colour array,
 /// sparse indices, w != 1). `from_elements`: a glDrawElements draw, whose quads llvmpipe splits
-/// from their second vertex.
+/// from their second vertex. `extra`: GL 1.4's attributes (null: the current values).
 bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from_elements, std::size_t count,
                      const std::uint32_t* direct, std::uint32_t lo, std::uint32_t hi,
-                     const ElementLoader& load);
+                     const ElementLoader& load, const ExtraLoader* extra = nullptr);
 
 }  // namespace shadelab::gl

@@ -1,7 +1,8 @@
-// The core pipeline's per-draw state from GL's (GL 1.1 chapter 4, sections 3.3-3.5 and 3.9):
-// depth, stencil, blending, logic op, scissor, alpha test, colour mask, polygon offset and
-// stipple, polygon modes, lines, points and clip planes into FragmentState; glFog into
-// FogState. Translation only: no GL state changes and no drawing here.
+// The core pipeline's per-draw state from GL's (GL 1.1 chapter 4, sections 3.3-3.5 and 3.9;
+// GL 1.4's blending and stencil operations, section 4.1): depth, stencil, blending, logic op,
+// scissor, alpha test, colour mask, polygon offset and stipple, polygon modes, lines, points
+// and clip planes into FragmentState; glFog into FogState. Translation only: no GL state
+// changes and no drawing here.
 #include "gl/src/draw_state.hpp"
 
 #include <algorithm>
@@ -32,6 +33,8 @@ StencilOp stencil_op(GLenum op) {
     case GL_INCR: return StencilOp::kIncr;
     case GL_DECR: return StencilOp::kDecr;
     case GL_INVERT: return StencilOp::kInvert;
+    case GL_INCR_WRAP: return StencilOp::kIncrWrap;
+    case GL_DECR_WRAP: return StencilOp::kDecrWrap;
     default: return StencilOp::kKeep;
   }
 }
@@ -48,8 +51,31 @@ BlendFactor blend_factor(GLenum f) {
     case GL_DST_ALPHA: return BlendFactor::kDstAlpha;
     case GL_ONE_MINUS_DST_ALPHA: return BlendFactor::kOneMinusDstAlpha;
     case GL_SRC_ALPHA_SATURATE: return BlendFactor::kSrcAlphaSaturate;
+    case GL_CONSTANT_COLOR: return BlendFactor::kConstantColor;
+    case GL_ONE_MINUS_CONSTANT_COLOR: return BlendFactor::kOneMinusConstantColor;
+    case GL_CONSTANT_ALPHA: return BlendFactor::kConstantAlpha;
+    case GL_ONE_MINUS_CONSTANT_ALPHA: return BlendFactor::kOneMinusConstantAlpha;
     default: return BlendFactor::kOne;
   }
+}
+
+BlendEquation blend_equation(GLenum mode) {
+  switch (mode) {
+    case GL_FUNC_SUBTRACT: return BlendEquation::kSubtract;
+    case GL_FUNC_REVERSE_SUBTRACT: return BlendEquation::kReverseSubtract;
+    case GL_MIN: return BlendEquation::kMin;
+    case GL_MAX: return BlendEquation::kMax;
+    default: return BlendEquation::kAdd;
+  }
+}
+
+BlendState blend_state(const RasterState& r) {
+  BlendState b{r.blend, blend_factor(r.blend_src), blend_factor(r.blend_dst)};
+  b.src_alpha = blend_factor(r.blend_src_alpha);
+  b.dst_alpha = blend_factor(r.blend_dst_alpha);
+  b.equation = blend_equation(r.blend_equation);
+  b.color = r.blend_color;
+  return b;
 }
 
 PolygonMode polygon_mode(GLenum mode) {
@@ -72,7 +98,7 @@ FragmentState fragment_state(const GlContext& c) {
   f.depth_test = r.depth_test && c.depth_bits > 0;
   f.depth_func = compare_func(r.depth_func);
   f.depth_write = r.depth_mask;
-  f.blend = {r.blend, blend_factor(r.blend_src), blend_factor(r.blend_dst)};
+  f.blend = blend_state(r);
   // glDrawBuffer(GL_NONE) writes no colour (GL 1.1 section 4.2.1).
   for (int i = 0; i < 4; ++i) f.color_mask[i] = r.color_mask[std::size_t(i)] && draws_color(c);
   StencilState& s = f.stencil;
@@ -100,7 +126,18 @@ FragmentState fragment_state(const GlContext& c) {
   f.line = {raster_size(p.line_width, 1.0f, kMaxLineWidth), p.line_smooth,
             p.line_stipple && p.stipple_pattern != 0xffff, p.stipple_pattern,
             GLushort(p.stipple_repeat)};
+  // GL 1.4 section 3.3: the derived size clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX]. As
+  // in Mesa, glPointSize's size is clamped so when nothing attenuates it; else the core derives
+  // each point's size and clamps it (never below kMinPointSize). The fade threshold applies to
+  // multisampled points only: it changes nothing here (nor in llvmpipe).
   f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
+  f.point.attenuation = p.point_attenuation;
+  f.point.min_size = std::max(p.point_min, kMinPointSize);
+  f.point.max_size = std::min(p.point_max, kMaxPointSize);
+  if (!f.point.attenuated()) {
+    const float s = p.point_size < p.point_min ? p.point_min : p.point_size > p.point_max ? p.point_max : p.point_size;
+    f.point.size = raster_size(s, 0.0f, kMaxPointSize);
+  }
   for (int i = 0; i < kMaxClipPlanes; ++i) {
     f.clip.eye[std::size_t(i)] = p.clip_planes[std::size_t(i)];
     if (p.clip_enabled[std::size_t(i)]) f.clip.enabled |= std::uint8_t(1u << i);

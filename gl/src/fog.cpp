@@ -1,4 +1,5 @@
-// glFog{f,i}[v] (GL 1.1 section 3.9): the fog mode, density, start, end, index and colour.
+// glFog{f,i}[v] (GL 1.1 section 3.9): the fog mode, density, start, end, index and colour, and
+// GL 1.4's fog coordinate source (section 3.10).
 // State only: the core pipeline fogs fragments (ShadeState::fog, draw_state.cpp's fog_state).
 // Mesa's rules: a scalar glFog call with a vector parameter (GL_FOG_COLOR) sets its first
 // component (the others zero); glFogiv's colour maps integers to [-1, 1]; the colour is
@@ -39,6 +40,12 @@ void fog(GlContext& c, GLenum pname, const GLfloat* p) {
     case GL_FOG_COLOR:
       f.color = {clamp_unit(p[0]), clamp_unit(p[1]), clamp_unit(p[2]), clamp_unit(p[3])};
       return;
+    case GL_FOG_COORDINATE_SOURCE: {  // GL 1.4 section 3.10
+      const GLenum source = std::isfinite(p[0]) && std::fabs(p[0]) < 2e9f ? GLenum(GLint(p[0])) : 0;
+      if (source != GL_FOG_COORDINATE && source != GL_FRAGMENT_DEPTH) return c.set_error(GL_INVALID_ENUM);
+      f.coord_source = source;
+      return;
+    }
     default: c.set_error(GL_INVALID_ENUM);
   }
 }

@@ -1,6 +1,6 @@
 // Per-fragment state and clearing (GL 1.1 sections 4.1-4.2): glScissor, glAlphaFunc,
-// glDepthFunc, glDepthMask, glColorMask, glBlendFunc, glLogicOp, glStencil*, glCullFace,
-// glFrontFace, glPolygonOffset, glClear*. Stores state; the core pipeline applies it per
+// glDepthFunc, glDepthMask, glColorMask, glLogicOp, glStencil* (with GL 1.4's wrapping
+// operations), glCullFace, glFrontFace, glPolygonOffset, glClear* (blending: blend.cpp). Stores state; the core pipeline applies it per
 // fragment. glClear clears the framebuffer tile by tile (with the pipeline, each tile is
 // cleared by the draw that next draws into it), or the scissor box's pixels at once.
 #include <algorithm>
@@ -19,14 +19,10 @@ namespace {
 
 bool is_compare_func(GLenum f) { return f >= GL_NEVER && f <= GL_ALWAYS; }
 
+// GL 1.1's operations and GL 1.4's wrapping ones (section 4.1.5).
 bool is_stencil_op(GLenum op) {
   return op == GL_KEEP || op == GL_ZERO || op == GL_REPLACE || op == GL_INCR || op == GL_DECR ||
-         op == GL_INVERT;
-}
-
-// Every GL 1.1 blend factor is accepted as source and destination, as Mesa does.
-bool is_blend_factor(GLenum f) {
-  return f == GL_ZERO || f == GL_ONE || (f >= GL_SRC_COLOR && f <= GL_SRC_ALPHA_SATURATE);
+         op == GL_INVERT || op == GL_INCR_WRAP || op == GL_DECR_WRAP;
 }
 
 float clamp01(float v) { return v == v ? std::clamp(v, 0.0f, 1.0f) : 0.0f; }
@@ -239,12 +235,6 @@ void exec::DepthMask(GlContext& c, GLboolean flag) { c.raster.depth_mask = flag 
 
 void exec::ColorMask(GlContext& c, GLboolean r, GLboolean g, GLboolean b, GLboolean a) {
   c.raster.color_mask = {r != 0, g != 0, b != 0, a != 0};
-}
-
-void exec::BlendFunc(GlContext& c, GLenum sfactor, GLenum dfactor) {
-  if (!is_blend_factor(sfactor) || !is_blend_factor(dfactor)) return c.set_error(GL_INVALID_ENUM);
-  c.raster.blend_src = sfactor;
-  c.raster.blend_dst = dfactor;
 }
 
 void exec::CullFace(GlContext& c, GLenum mode) {

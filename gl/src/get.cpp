@@ -59,6 +59,10 @@ Values transposed(const glm::mat4& m) {
 
 Values ints(std::initializer_list<double> xs) { return make(Kind::kInt, xs); }
 
+// GL_CURRENT_RASTER_SECONDARY_COLOR: the raster position's secondary colour, which Mesa
+// answers (the enum came with GL 3.0's compatibility tables, not in a GL 1.x feature).
+constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
+
 Values array_state(const ClientArray& a, bool with_size) {
   return with_size ? ints({double(a.size)}) : ints({});
 }
@@ -81,7 +85,18 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_ARRAY_TYPE: out = ints({double(a.index.type)}); return true;
     case GL_INDEX_ARRAY_STRIDE: out = ints({double(a.index.stride)}); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(a.edge_flag.stride)}); return true;
-    // GL 1.5: the buffer bindings (section 2.9).
+    case GL_SECONDARY_COLOR_ARRAY_SIZE: out = array_state(a.secondary_color, true); return true;
+    case GL_SECONDARY_COLOR_ARRAY_TYPE: out = ints({double(a.secondary_color.type)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY_STRIDE: out = ints({double(a.secondary_color.stride)}); return true;
+    case GL_FOG_COORD_ARRAY_TYPE: out = ints({double(a.fog_coord.type)}); return true;
+    case GL_FOG_COORD_ARRAY_STRIDE: out = ints({double(a.fog_coord.stride)}); return true;
+    default: break;
+  }
+  switch (pname) {  // GL 1.2's 3D image layout, GL 1.5's buffer bindings (section 2.9)
+    case GL_PACK_IMAGE_HEIGHT: out = ints({double(c.pack.image_height)}); return true;
+    case GL_PACK_SKIP_IMAGES: out = ints({double(c.pack.skip_images)}); return true;
+    case GL_UNPACK_IMAGE_HEIGHT: out = ints({double(c.unpack.image_height)}); return true;
+    case GL_UNPACK_SKIP_IMAGES: out = ints({double(c.unpack.skip_images)}); return true;
     case GL_ARRAY_BUFFER_BINDING: out = ints({double(a.array_buffer_name)}); return true;
     case GL_ELEMENT_ARRAY_BUFFER_BINDING: out = ints({double(a.element_buffer_name)}); return true;
     case GL_VERTEX_ARRAY_BUFFER_BINDING: out = ints({double(a.vertex.buffer_name)}); return true;
@@ -90,6 +105,8 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_ARRAY_BUFFER_BINDING: out = ints({double(a.index.buffer_name)}); return true;
     case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.texcoord.buffer_name)}); return true;
     case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: out = ints({double(a.edge_flag.buffer_name)}); return true;
+    case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: out = ints({double(a.secondary_color.buffer_name)}); return true;
+    case GL_FOG_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.fog_coord.buffer_name)}); return true;
     default: break;
   }
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
@@ -112,6 +129,8 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_NORMAL: out = vec(Kind::kColor, glm::value_ptr(c.current.normal), 3); return true;
     case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
     case GL_CURRENT_INDEX: out = make(Kind::kFloat, {c.current.index}); return true;
+    case GL_CURRENT_SECONDARY_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.secondary), 4); return true;
+    case GL_CURRENT_FOG_COORD: out = make(Kind::kFloat, {c.current.fog_coord}); return true;
     case GL_EDGE_FLAG: out = make(Kind::kBool, {double(c.current.edge_flag == 1.0f)}); return true;
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
@@ -151,8 +170,14 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_DEPTH_CLEAR_VALUE: out = make(Kind::kColor, {r.clear_depth}); return true;
     case GL_COLOR_CLEAR_VALUE: out = vec(Kind::kColor, glm::value_ptr(r.clear_color), 4); return true;
     case GL_COLOR_WRITEMASK: out = make(Kind::kBool, {double(m[0]), double(m[1]), double(m[2]), double(m[3])}); return true;
-    case GL_BLEND_SRC: out = ints({double(r.blend_src)}); return true;
+    case GL_BLEND_SRC: out = ints({double(r.blend_src)}); return true;  // the colour's (GL 1.4)
     case GL_BLEND_DST: out = ints({double(r.blend_dst)}); return true;
+    case GL_BLEND_SRC_RGB: out = ints({double(r.blend_src)}); return true;
+    case GL_BLEND_DST_RGB: out = ints({double(r.blend_dst)}); return true;
+    case GL_BLEND_SRC_ALPHA: out = ints({double(r.blend_src_alpha)}); return true;
+    case GL_BLEND_DST_ALPHA: out = ints({double(r.blend_dst_alpha)}); return true;
+    case GL_BLEND_EQUATION: out = ints({double(r.blend_equation)}); return true;
+    case GL_BLEND_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.blend_color), 4); return true;
     case GL_CULL_FACE_MODE: out = ints({double(r.cull_mode)}); return true;
     case GL_FRONT_FACE: out = ints({double(r.front_face)}); return true;
     case GL_STENCIL_FUNC: out = ints({double(r.stencil_func)}); return true;
@@ -177,8 +202,10 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_END: out = make(Kind::kFloat, {c.fog.end}); return true;
     case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
     case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
+    case GL_FOG_COORD_SRC: out = ints({double(c.fog.coord_source)}); return true;
     case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
+    case GL_TEXTURE_BINDING_3D: out = ints({double(c.textures.binding_3d.name)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
     case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;
@@ -218,6 +245,7 @@ bool query_pixels(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_RASTER_POSITION: out = vec(Kind::kFloat, glm::value_ptr(r.window), 4); return true;
     case GL_CURRENT_RASTER_POSITION_VALID: out = make(Kind::kBool, {double(r.valid)}); return true;
     case GL_CURRENT_RASTER_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.color), 4); return true;
+    case kCurrentRasterSecondaryColor: out = vec(Kind::kColor, glm::value_ptr(r.secondary), 4); return true;
     case GL_CURRENT_RASTER_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(r.texcoord), 4); return true;
     case GL_CURRENT_RASTER_DISTANCE: out = make(Kind::kFloat, {r.distance}); return true;
     case GL_CURRENT_RASTER_INDEX: out = make(Kind::kFloat, {r.index}); return true;
@@ -258,6 +286,7 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     // GL 1.3: no specific compressed texture format (texcompress.cpp).
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out = ints({0}); return true;
     case GL_COMPRESSED_TEXTURE_FORMATS: out = ints({}); return true;
+    case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3dTextureSize}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_SUBPIXEL_BITS: out = ints({8}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = ints({double(c.hints[0])}); return true;
@@ -265,7 +294,9 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_LINE_SMOOTH_HINT: out = ints({double(c.hints[2])}); return true;
     case GL_POLYGON_SMOOTH_HINT: out = ints({double(c.hints[3])}); return true;
     case GL_FOG_HINT: out = ints({double(c.hints[4])}); return true;
-    case GL_TEXTURE_COMPRESSION_HINT: out = ints({double(c.hints[5])}); return true;
+    case GL_TEXTURE_COMPRESSION_HINT: out = ints({double(c.hints[6])}); return true;
+    case GL_GENERATE_MIPMAP_HINT: out = ints({double(c.hints[5])}); return true;
+    case GL_MAX_TEXTURE_LOD_BIAS: out = make(Kind::kFloat, {kMaxTextureLodBias}); return true;
     case GL_MAX_LIST_NESTING: out = ints({kMaxListNesting}); return true;
     case GL_MAX_EVAL_ORDER: out = ints({kMaxEvalOrder}); return true;
     case GL_MAP1_GRID_DOMAIN: out = make(Kind::kFloat, {c.eval.attribs.grid1_u1, c.eval.attribs.grid1_u2}); return true;
@@ -296,6 +327,12 @@ bool query_prims(const GlContext& c, GLenum pname, Values& out) {
       return true;
     case GL_POINT_SIZE_GRANULARITY:
       out = make(Kind::kFloat, {kSizeGranularity});
+      return true;
+    case GL_POINT_SIZE_MIN: out = make(Kind::kFloat, {p.point_min}); return true;
+    case GL_POINT_SIZE_MAX: out = make(Kind::kFloat, {p.point_max}); return true;
+    case GL_POINT_FADE_THRESHOLD_SIZE: out = make(Kind::kFloat, {p.point_fade}); return true;
+    case GL_POINT_DISTANCE_ATTENUATION:
+      out = make(Kind::kFloat, {p.point_attenuation.x, p.point_attenuation.y, p.point_attenuation.z});
       return true;
     case GL_LINE_WIDTH:
       out = make(Kind::kFloat, {p.line_width});
@@ -381,6 +418,8 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
     case GL_INDEX_ARRAY_POINTER: p = a.index.pointer; break;
     case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
     case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: p = a.secondary_color.pointer; break;
+    case GL_FOG_COORD_ARRAY_POINTER: p = a.fog_coord.pointer; break;
     case GL_FEEDBACK_BUFFER_POINTER: p = c.feedback.buffer; break;
     case GL_SELECTION_BUFFER_POINTER: p = c.selection.buffer; break;
     default: return c.set_error(GL_INVALID_ENUM);

@@ -61,6 +61,8 @@ void exec::InterleavedArrays(GlContext& c, GLenum format, GLsizei stride, const 
   const GLuint name = a.array_buffer_name;
   a.edge_flag.enabled = false;
   a.index.enabled = false;
+  a.secondary_color.enabled = false;  // GL 1.4 section 2.8
+  a.fog_coord.enabled = false;
   a.texcoord.enabled = l.texcoords > 0;
   if (l.texcoords > 0) a.texcoord = {true, l.texcoords, GL_FLOAT, stride, pointer, buffer, name};
   a.color.enabled = l.colors > 0;

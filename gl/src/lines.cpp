@@ -1,11 +1,12 @@
 // Points, lines, polygon modes and user clip planes (GL 1.1 sections 2.11, 3.3-3.5):
-// glPointSize, glLineWidth, glLineStipple, glPolygonMode, glClipPlane and glGetClipPlane.
+// glPointSize, GL 1.4's glPointParameter, glLineWidth, glLineStipple, glPolygonMode, glClipPlane and glGetClipPlane.
 // State and validation only, with Mesa's errors; draw_state.cpp hands the state to the pipeline
 // (the edge flags are in current.cpp and arrays.cpp).
 #include <algorithm>
 #include <glm/matrix.hpp>
 
 #include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/context.hpp"
 
 namespace shadelab::gl {
@@ -14,6 +15,49 @@ namespace shadelab::gl {
 void exec::PointSize(GlContext& c, GLfloat size) {
   if (size <= 0.0f) return c.set_error(GL_INVALID_VALUE);
   c.prims.point_size = size;
+}
+
+// GL 1.4 section 3.3 with Mesa's rules: a negative size or threshold is GL_INVALID_VALUE; the
+// scalar forms of GL_POINT_DISTANCE_ATTENUATION set (param, 0, 0). `p` holds three values.
+namespace {
+void point_parameter(GlContext& c, GLenum pname, const GLfloat* p) {
+  PrimState& s = c.prims;
+  switch (pname) {
+    case GL_POINT_DISTANCE_ATTENUATION: s.point_attenuation = glm::vec3(p[0], p[1], p[2]); return;
+    case GL_POINT_SIZE_MIN:
+    case GL_POINT_SIZE_MAX:
+    case GL_POINT_FADE_THRESHOLD_SIZE:
+      if (p[0] < 0.0f) return c.set_error(GL_INVALID_VALUE);
+      (pname == GL_POINT_SIZE_MIN ? s.point_min : pname == GL_POINT_SIZE_MAX ? s.point_max : s.point_fade) = p[0];
+      return;
+    default: c.set_error(GL_INVALID_ENUM);
+  }
+}
+}  // namespace
+
+// How many values glPointParameterfv / iv read (display lists copy them).
+std::size_t save_count::PointParameterfv(GLenum pname) { return pname == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1; }
+std::size_t save_count::PointParameteriv(GLenum pname) { return pname == GL_POINT_DISTANCE_ATTENUATION ? 3 : 1; }
+
+void exec::PointParameterf(GlContext& c, GLenum pname, GLfloat param) {
+  const GLfloat p[3] = {param, 0.0f, 0.0f};
+  point_parameter(c, pname, p);
+}
+void exec::PointParameteri(GlContext& c, GLenum pname, GLint param) {
+  const GLfloat p[3] = {GLfloat(param), 0.0f, 0.0f};
+  point_parameter(c, pname, p);
+}
+void exec::PointParameterfv(GlContext& c, GLenum pname, const GLfloat* params) {
+  if (!params) return;  // nothing to read (Mesa would fault)
+  GLfloat p[3] = {params[0], 0.0f, 0.0f};
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) p[1] = params[1], p[2] = params[2];
+  point_parameter(c, pname, p);
+}
+void exec::PointParameteriv(GlContext& c, GLenum pname, const GLint* params) {
+  if (!params) return;
+  GLfloat p[3] = {GLfloat(params[0]), 0.0f, 0.0f};
+  if (pname == GL_POINT_DISTANCE_ATTENUATION) p[1] = GLfloat(params[1]), p[2] = GLfloat(params[2]);
+  point_parameter(c, pname, p);
 }
 
 // Section 3.4: likewise for the line width.

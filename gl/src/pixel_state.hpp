@@ -23,11 +23,11 @@ inline constexpr int kMaxPixelMapTable = 256;
 struct RasterPosition {
   glm::vec4 window{0.0f, 0.0f, 0.0f, 1.0f};  ///< window x, y, z and the clip-space w
   bool valid = true;
-  glm::vec4 color{1.0f};            ///< lit (clamped) or the current colour (as given)
-  glm::vec4 secondary{0.0f};        ///< the separate specular colour when lit
-  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};  ///< after the texture matrix
-  float distance = 0.0f;            ///< eye-space distance from the eye (fog)
-  float index = 1.0f;               ///< GL_CURRENT_RASTER_INDEX (colour index mode only)
+  glm::vec4 color{1.0f};                        ///< lit (clamped) or the current colour (as given)
+  glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};  ///< the separate specular colour when lit
+  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};   ///< after the texture matrix
+  float distance = 0.0f;                        ///< eye-space distance from the eye (fog)
+  float index = 1.0f;                           ///< GL_CURRENT_RASTER_INDEX (colour index mode only)
 };
 
 /// The ten pixel maps of GL 1.1 table 3.3, in the order of their enums

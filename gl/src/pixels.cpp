@@ -123,6 +123,12 @@ BitmapLayout bitmap_layout(const PixelStore& s, int width) {
   return l;
 }
 
+std::size_t image_stride(const PixelStore& s, GLenum format, GLenum type, int width, int height) {
+  const std::size_t rows = std::size_t(s.image_height > 0 ? s.image_height : height);
+  if (type == GL_BITMAP) return rows * bitmap_layout(s, width).row_stride;
+  return rows * pixel_layout(s, elements_per_pixel(format, type), pixel_type_size(type), width).row_stride;
+}
+
 namespace {
 
 template <class T>

@@ -78,6 +78,11 @@ struct BitmapLayout {
 };
 BitmapLayout bitmap_layout(const PixelStore& store, int width);
 
+/// Bytes from one image of a 3D client image of `format` and `type` to the next (GL 1.5
+/// section 3.8.1): GL_*_IMAGE_HEIGHT rows (`height` while it is 0) of the row stride
+/// pixel_layout (or, for GL_BITMAP, bitmap_layout) gives. GL_*_SKIP_IMAGES skips whole ones.
+std::size_t image_stride(const PixelStore& store, GLenum format, GLenum type, int width, int height);
+
 /// Component of `type` at `p` as a float: unsigned integers map to [0, 1], signed ones to
 /// [-1, 1] as Mesa converts them (c / (2^(b-1) - 1), at least -1: the rule of later GL
 /// versions; GL 1.1's table 2.6 has (2c + 1) / (2^b - 1)), floats are kept.

@@ -67,9 +67,9 @@ glm::vec3 eye_normal(const GlContext& c, const glm::mat4& modelview) {
 // 2.13.6), or the current colour as it is, as Mesa keeps it.
 void set_color(GlContext& c, const glm::vec4& eye, const glm::mat4& modelview) {
   RasterPosition& r = c.raster_pos;
-  if (!c.lighting.enabled) {
+  if (!c.lighting.enabled) {  // the current colours as they are (GL 1.4: the secondary too)
     r.color = c.current.color;
-    r.secondary = glm::vec4(0.0f);
+    r.secondary = c.current.secondary;
     return;
   }
   std::vector<Light> lights;
@@ -97,7 +97,9 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   }
   r.valid = true;
   r.window = glm::vec4(window_of(c.raster.viewport, clip), clip.w);
-  r.distance = std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
+  // GL 1.4 section 2.12: the fog coordinate, or the eye distance (Mesa's choice of distance).
+  r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
+                                                        : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
   r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
   select_raster_position(c);
@@ -111,9 +113,10 @@ void raster_pos_v(GlContext& c, const T* v, int n) {
 
 // GL 1.5 section 2.12, glWindowPos: x and y are the window coordinates, z in [0, 1] is mapped
 // into the depth range (in single precision, as Mesa computes it), w is 1. Nothing is
-// transformed, lit or clipped: the position is valid, the colour is the current colour
-// (clamped, as Mesa clamps it), the texture coordinates are the current ones (no texture
-// matrix), the distance is the current fog coordinate when that is the fog source, else 0.
+// transformed, lit or clipped: the position is valid, the colours are the current colour and
+// secondary colour (clamped, as Mesa clamps them), the texture coordinates are the current
+// ones (no texture matrix), the distance is the current fog coordinate when that is the fog
+// source, else 0.
 void window_pos(GlContext& c, double x, double y, double z) {
   RasterPosition& r = c.raster_pos;
   const Viewport& vp = c.raster.viewport;
@@ -121,10 +124,8 @@ void window_pos(GlContext& c, double x, double y, double z) {
   r.valid = true;
   r.window = glm::vec4(float(x), float(y), zc * (vp.far_depth - vp.near_depth) + vp.near_depth, 1.0f);
   r.color = glm::clamp(c.current.color, glm::vec4(0.0f), glm::vec4(1.0f));
-  // The current secondary colour and fog coordinate are GL 1.4 state not kept yet: their
-  // initial values, (0, 0, 0, 1) and a raster distance of 0.
-  r.secondary = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-  r.distance = 0.0f;
+  r.secondary = glm::clamp(c.current.secondary, glm::vec4(0.0f), glm::vec4(1.0f));
+  r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord : 0.0f;
   r.texcoord = c.current.texcoord;
   select_raster_position(c);
 }

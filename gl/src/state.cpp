@@ -30,8 +30,10 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_INDEX_LOGIC_OP: return &c.raster.index_logic_op;  // = GL 1.0's GL_LOGIC_OP
     case GL_POLYGON_STIPPLE: return &c.raster.polygon_stipple;
     case GL_FOG: return &c.fog.enabled;
+    case GL_COLOR_SUM: return &c.fog.color_sum;
     case GL_TEXTURE_1D: return &c.textures.enabled_1d;
     case GL_TEXTURE_2D: return &c.textures.enabled_2d;
+    case GL_TEXTURE_3D: return &c.textures.enabled_3d;
     case GL_TEXTURE_GEN_S: return &c.textures.gen[0].enabled;
     case GL_TEXTURE_GEN_T: return &c.textures.gen[1].enabled;
     case GL_TEXTURE_GEN_R: return &c.textures.gen[2].enabled;
@@ -58,6 +60,8 @@ bool* client_capability_flag(GlContext& c, GLenum cap) {
     case GL_TEXTURE_COORD_ARRAY: return &c.arrays.texcoord.enabled;
     case GL_INDEX_ARRAY: return &c.arrays.index.enabled;
     case GL_EDGE_FLAG_ARRAY: return &c.arrays.edge_flag.enabled;
+    case GL_SECONDARY_COLOR_ARRAY: return &c.arrays.secondary_color.enabled;
+    case GL_FOG_COORD_ARRAY: return &c.arrays.fog_coord.enabled;
     default: return nullptr;
   }
 }
@@ -86,7 +90,8 @@ int hint_slot(GLenum target) {
     case GL_LINE_SMOOTH_HINT: return 2;
     case GL_POLYGON_SMOOTH_HINT: return 3;
     case GL_FOG_HINT: return 4;
-    case GL_TEXTURE_COMPRESSION_HINT: return 5;
+    case GL_GENERATE_MIPMAP_HINT: return 5;  // GL 1.4: accepted, changes nothing (as Mesa)
+    case GL_TEXTURE_COMPRESSION_HINT: return 6;
     default: return -1;
   }
 }
@@ -95,6 +100,20 @@ int hint_slot(GLenum target) {
 void pixel_store(GlContext& c, GLenum pname, double value) {
   bool pack = pname >= GL_PACK_SWAP_BYTES && pname <= GL_PACK_ALIGNMENT;
   bool unpack = pname >= GL_UNPACK_SWAP_BYTES && pname <= GL_UNPACK_ALIGNMENT;
+  GLint* images = nullptr;  // GL 1.2's image height and skip images (3D images)
+  switch (pname) {
+    case GL_PACK_IMAGE_HEIGHT: images = &c.pack.image_height; break;
+    case GL_PACK_SKIP_IMAGES: images = &c.pack.skip_images; break;
+    case GL_UNPACK_IMAGE_HEIGHT: images = &c.unpack.image_height; break;
+    case GL_UNPACK_SKIP_IMAGES: images = &c.unpack.skip_images; break;
+    default: break;
+  }
+  if (images) {
+    const double rounded = value < 0.0 ? std::ceil(value - 0.5) : std::floor(value + 0.5);
+    if (!(rounded >= 0.0 && rounded <= 1e9)) return c.set_error(GL_INVALID_VALUE);
+    *images = GLint(rounded);
+    return;
+  }
   if (!pack && !unpack) return c.set_error(GL_INVALID_ENUM);
   PixelStore& s = pack ? c.pack : c.unpack;
   GLenum base = pack ? GL_PACK_SWAP_BYTES : GL_UNPACK_SWAP_BYTES;

@@ -1,5 +1,5 @@
 // Texture images copied from the framebuffer (GL 1.1 section 3.8.2): glCopyTexImage1D/2D and
-// glCopyTexSubImage1D/2D. The colour buffer is read after every draw made before the call
+// glCopyTexSubImage1D/2D/3D (GL 1.2: a rectangle into one image of a 3D level). The colour buffer is read after every draw made before the call
 // and its RGBA converted as glTexImage converts unsigned bytes (luminance and intensity take
 // R). Errors and their order are Mesa's (teximage.c's copytexture_error_check and
 // copytexsubimage_error_check).
@@ -36,10 +36,10 @@ RgbaImage read_framebuffer(GlContext& c, int x, int y, int width, int height, st
 
 // Stores only the pixels that came from inside the framebuffer (the others keep the
 // texture's texels: what Mesa does, and within what GL allows, as they are undefined).
-void store_inside(const RgbaImage& image, const std::vector<std::uint8_t>& inside, int x0, int y0, TexImage& level,
-                  TextureLevel& core) {
+void store_inside(const RgbaImage& image, const std::vector<std::uint8_t>& inside, int x0, int y0, int z0,
+                  TexImage& level, TextureLevel& core) {
   if (std::all_of(inside.begin(), inside.end(), [](std::uint8_t in) { return in != 0; })) {
-    return store_texels(image, x0, y0, level, core);
+    return store_texels(image, x0, y0, z0, level, core);
   }
   RgbaImage one;
   one.width = one.height = 1;
@@ -50,7 +50,7 @@ void store_inside(const RgbaImage& image, const std::vector<std::uint8_t>& insid
       const std::size_t k = std::size_t(j) * std::size_t(image.width) + std::size_t(i);
       if (!inside[k]) continue;
       std::copy(&image.rgba[k * 4], &image.rgba[k * 4] + 4, one.rgba.begin());
-      store_texels(one, x0 + i, y0 + j, level, core);
+      store_texels(one, x0 + i, y0 + j, z0, level, core);
     }
   }
 }
@@ -74,28 +74,32 @@ void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum i
   TextureObject& t = *bound_texture(c, target);
   texture_changing(c, t);
   define_level(t, level, GLint(internal), inner_w, inner_h);
-  store_inside(image, inside, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  store_inside(image, inside, 0, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
-// glCopyTexSubImage1D (dims 1) and glCopyTexSubImage2D.
-void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
-                        GLint y, GLsizei width, GLsizei height) {
-  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+// glCopyTexSubImage1D (dims 1), glCopyTexSubImage2D and glCopyTexSubImage3D (into image
+// zoffset).
+void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                        GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
+  if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= (dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels)) return c.set_error(GL_INVALID_VALUE);
   TextureObject& t = *bound_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
     return c.set_error(GL_INVALID_OPERATION);
   }
   TexImage& img = t.images[std::size_t(level)];
   if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
-  if (xoffset < 0 || yoffset < 0 || long(xoffset) + width > img.width || long(yoffset) + height > img.height) {
+  if (xoffset < 0 || yoffset < 0 || long(xoffset) + width > img.width || long(yoffset) + height > img.height ||
+      zoffset < 0 || zoffset >= img.depth) {
     return c.set_error(GL_INVALID_VALUE);
   }
   if (width == 0 || height == 0) return;
   std::vector<std::uint8_t> inside;
   RgbaImage image = read_framebuffer(c, x, y, width, height, inside);
   texture_changing(c, t);
-  store_inside(image, inside, xoffset, yoffset, img, t.texture.levels[std::size_t(level)]);
+  store_inside(image, inside, xoffset, yoffset, zoffset, img, t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 }  // namespace
@@ -111,12 +115,17 @@ void exec::CopyTexImage2D(GlContext& c, GLenum target, GLint level, GLenum inter
 }
 
 void exec::CopyTexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint x, GLint y, GLsizei width) {
-  copy_tex_sub_image(c, 1, target, level, xoffset, 0, x, y, width, 1);
+  copy_tex_sub_image(c, 1, target, level, xoffset, 0, 0, x, y, width, 1);
 }
 
 void exec::CopyTexSubImage2D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x, GLint y,
                              GLsizei width, GLsizei height) {
-  copy_tex_sub_image(c, 2, target, level, xoffset, yoffset, x, y, width, height);
+  copy_tex_sub_image(c, 2, target, level, xoffset, yoffset, 0, x, y, width, height);
+}
+
+void exec::CopyTexSubImage3D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                             GLint x, GLint y, GLsizei width, GLsizei height) {
+  copy_tex_sub_image(c, 3, target, level, xoffset, yoffset, zoffset, x, y, width, height);
 }
 
 }  // namespace shadelab::gl

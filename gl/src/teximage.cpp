@@ -1,5 +1,5 @@
-// Texture images (GL 1.1 sections 3.8.1, 3.8.2): glTexImage1D/2D with every GL 1.1 internal
-// format, the proxy targets, glTexSubImage1D/2D, and the storage shared with the copies
+// Texture images (GL 1.1 sections 3.8.1, 3.8.2; GL 1.2's 3D images): glTexImage1D/2D/3D with
+// every GL 1.1 internal format, the proxy targets, glTexSubImage1D/2D/3D, and the storage shared with the copies
 // (texcopy.cpp). Errors and their order are Mesa's (teximage.c's texture_error_check and
 // texsubimage_error_check). As in Mesa's gallium drivers, a border is stripped from the
 // image when it is stored (GL_CLAMP blends in GL_TEXTURE_BORDER_COLOR instead); proxies keep
@@ -37,88 +37,117 @@ GLenum check_format_and_type(GLenum format, GLenum type) {
 bool formats_agree(GLenum format) { return format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX; }
 
 // Mesa's _mesa_legal_texture_dimensions: each side from 2 border to 2 border + the largest
-// size at that level (any size in between: non-power-of-two sizes are accepted).
-bool legal_size(int size, int border, int level) {
-  const long max = long(kMaxTextureSize) >> level;
+// size at that level (any size in between: non-power-of-two sizes are accepted). 3D
+// textures have their own limit (GL_MAX_3D_TEXTURE_SIZE).
+bool legal_size(int size, int border, int level, int dims) {
+  const long max = long(dims == 3 ? kMax3dTextureSize : kMaxTextureSize) >> level;
   return size >= 2 * border && long(size) <= 2 * border + max;
 }
 
+// llvmpipe makes no texture of more than 1 GiB (LP_MAX_TEXTURE_SIZE): a 3D image past it is
+// GL_OUT_OF_MEMORY (a proxy: not made).
+bool fits_in_memory(int width, int height, int depth) {
+  return double(width) * double(height) * double(depth) * 4.0 <= double(1u << 30);
+}
+
 std::vector<TexImage>& proxy_images(GlContext& c, GLenum target) {
-  return target == GL_PROXY_TEXTURE_1D ? c.textures.proxy_1d : c.textures.proxy_2d;
+  return target == GL_PROXY_TEXTURE_1D ? c.textures.proxy_1d
+                                       : target == GL_PROXY_TEXTURE_3D ? c.textures.proxy_3d : c.textures.proxy_2d;
 }
 
 // A proxy's level as glTexImage would have made it (sizes as given, border kept), or cleared
 // when the image could not be made.
-void set_proxy(GlContext& c, GLenum target, int level, GLint internal, int width, int height, int border, bool ok) {
+void set_proxy(GlContext& c, GLenum target, int level, GLint internal, int width, int height, int depth, int border,
+               bool ok) {
   std::vector<TexImage>& images = proxy_images(c, target);
   if (images.size() <= std::size_t(level)) images.resize(std::size_t(level) + 1);
   TexImage& img = images[std::size_t(level)];
   img = TexImage{};
   if (!ok) return;
   img.defined = true;
-  img.width = width, img.height = height, img.border = border;
+  img.width = width, img.height = height, img.depth = depth, img.border = border;
   img.internal_format = internal;
   stored_format(internal, img.format);
 }
 
-// The client image's pixels as RGBA, its border skipped (`skip` pixels on each side it has).
-RgbaImage unpack(const GlContext& c, int row_pixels, int skip_x, int skip_y, int width, int height, GLenum format,
-                 GLenum type, const void* pixels) {
+// The client image's pixels as RGBA, its border skipped (`skip` pixels on each side it has;
+// skip_z whole images of a 3D image), image by image (GL_UNPACK_IMAGE_HEIGHT and
+// GL_UNPACK_SKIP_IMAGES lay the images out).
+RgbaImage unpack(const GlContext& c, int row_pixels, int rows, int skip_x, int skip_y, int skip_z, int width, int height,
+                 int depth, bool three_d, GLenum format, GLenum type, const void* pixels) {
   RgbaImage image;
-  image.width = width, image.height = height;
-  image.rgba.assign(std::size_t(width) * std::size_t(height) * 4, 0.0f);
+  image.width = width, image.height = height, image.depth = depth;
+  const std::size_t slice = std::size_t(width) * std::size_t(height) * 4;
+  image.rgba.assign(slice * std::size_t(depth), 0.0f);
   image.exact_bytes = type == GL_UNSIGNED_BYTE && format != GL_COLOR_INDEX;
-  if (pixels && width > 0 && height > 0) {
-    unpack_rgba_image(c, c.unpack, row_pixels, skip_x, skip_y, width, height, format, type, pixels, image.rgba.data());
+  if (!pixels || width <= 0 || height <= 0) return image;
+  const std::size_t stride = three_d ? image_stride(c.unpack, format, type, row_pixels, rows) : 0;
+  for (int z = 0; z < depth; ++z) {
+    const std::size_t first = three_d ? std::size_t(c.unpack.skip_images + skip_z + z) * stride : 0;
+    const void* images = static_cast<const unsigned char*>(pixels) + first;
+    unpack_rgba_image(c, c.unpack, row_pixels, skip_x, skip_y, width, height, format, type, images,
+                      image.rgba.data() + slice * std::size_t(z));
   }
   return image;
 }
 
-// glTexImage1D (dims 1, height 1) and glTexImage2D.
+GLenum plain_target(int dims) { return dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D; }
+int max_levels(int dims) { return dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels; }
+
+// glTexImage1D (dims 1, height 1), glTexImage2D and glTexImage3D.
 void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint internal, GLsizei width, GLsizei height,
-               GLint border, GLenum format, GLenum type, const void* pixels) {
-  const GLenum plain = dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D;
-  const GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : GL_PROXY_TEXTURE_2D;
+               GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  const GLenum plain = plain_target(dims);
+  const GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : dims == 3 ? GL_PROXY_TEXTURE_3D : GL_PROXY_TEXTURE_2D;
   if (target != plain && target != proxy) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
   if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
-  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0 || depth < 0) return c.set_error(GL_INVALID_VALUE);
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
   StoredFormat stored;
   if (!stored_format(internal, stored)) return c.set_error(GL_INVALID_VALUE);
   if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
-  const bool legal = legal_size(width, border, level) && (dims == 1 || legal_size(height, border, level));
-  if (target == proxy) return set_proxy(c, target, level, internal, width, height, border, legal);
+  const bool legal = legal_size(width, border, level, dims) && (dims == 1 || legal_size(height, border, level, dims)) &&
+                     (dims < 3 || legal_size(depth, border, level, dims));
+  const bool fits = dims < 3 || fits_in_memory(width, height, depth);
+  if (target == proxy) return set_proxy(c, target, level, internal, width, height, depth, border, legal && fits);
   if (!legal) return c.set_error(GL_INVALID_VALUE);
+  if (!fits) return c.set_error(GL_OUT_OF_MEMORY);
   // Mesa's strip_texture_border: the border's pixels are skipped, the sides lose two.
   const int inner_w = width - 2 * border;
-  const bool strip_rows = dims == 2 && border && height >= 3;
-  const int inner_h = strip_rows ? height - 2 : height;
+  const bool strip_rows = dims >= 2 && border && height >= 3, strip_images = dims == 3 && border && depth >= 3;
+  const int inner_h = strip_rows ? height - 2 : height, inner_d = strip_images ? depth - 2 : depth;
   TextureObject& t = *bound_texture(c, target);
-  RgbaImage image = unpack(c, width, border, strip_rows ? 1 : 0, inner_w, inner_h, format, type, pixels);
+  RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
+                           inner_d, dims == 3, format, type, pixels);
   texture_changing(c, t);
-  define_level(t, level, internal, inner_w, inner_h);
-  store_texels(image, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  define_level(t, level, internal, inner_w, inner_h, inner_d);
+  store_texels(image, 0, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
-// glTexSubImage1D (dims 1) and glTexSubImage2D.
-void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, GLint y, GLsizei width,
-                   GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+// glTexSubImage1D (dims 1), glTexSubImage2D and glTexSubImage3D.
+void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei width,
+                   GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  if (target != plain_target(dims)) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
   TextureObject& t = *bound_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
     return c.set_error(GL_INVALID_OPERATION);
   }
   TexImage& img = t.images[std::size_t(level)];
-  if (width < 0 || height < 0) return c.set_error(GL_INVALID_VALUE);
-  if (x < 0 || y < 0 || long(x) + width > img.width || long(y) + height > img.height) return c.set_error(GL_INVALID_VALUE);
+  if (width < 0 || height < 0 || depth < 0) return c.set_error(GL_INVALID_VALUE);
+  if (x < 0 || y < 0 || z < 0 || long(x) + width > img.width || long(y) + height > img.height ||
+      long(z) + depth > img.depth) {
+    return c.set_error(GL_INVALID_VALUE);
+  }
   if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
-  if (width == 0 || height == 0 || !pixels) return;
-  RgbaImage image = unpack(c, width, 0, 0, width, height, format, type, pixels);
+  if (width == 0 || height == 0 || depth == 0 || !pixels) return;
+  RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
   texture_changing(c, t);
-  store_texels(image, x, y, img, t.texture.levels[std::size_t(level)]);
+  store_texels(image, x, y, z, img, t.texture.levels[std::size_t(level)]);
+  level_changed(t, level);
 }
 
 // What a display list keeps of a client image (GL 1.1 section 5.4): its pixels as the unpack
@@ -126,38 +155,49 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
 // default unpack state); empty when the command will not read them (it is then recorded
 // without pixels and fails, or makes an image of undefined contents, when the list runs).
 std::vector<unsigned char> list_image(const GlContext& c, int width, int height, GLenum format, GLenum type,
-                                      const void* pixels) {
+                                      const void* pixels, int depth = 0) {
   const int limit = kMaxTextureSize + 2;
-  if (!pixels || width <= 0 || height <= 0 || width > limit || height > limit) return {};
+  // depth 0: a 1D or 2D image (GL_UNPACK_SKIP_IMAGES does not apply).
+  if (!pixels || width <= 0 || height <= 0 || depth < 0 || width > limit || height > limit || depth > limit) return {};
   if (type == GL_BITMAP) {
-    return format == GL_COLOR_INDEX ? copy_bitmap(c.unpack, width, height, pixels) : std::vector<unsigned char>{};
+    if (format != GL_COLOR_INDEX || depth > 0) return {};
+    return copy_bitmap(c.unpack, width, height, pixels);
   }
   const int components = format == GL_COLOR_INDEX ? 1 : color_format_components(format) ? elements_per_pixel(format, type) : 0;
   const int size = pixel_type_size(type);
   if (components == 0 || size == 0) return {};
-  return copy_image(c.unpack, width, height, components, size, pixels);
+  if (depth == 0) return copy_image(c.unpack, width, height, components, size, pixels);
+  // A 3D image: each image as copy_image reads a 2D one, after the skipped images.
+  const std::size_t stride = image_stride(c.unpack, format, type, width, height);
+  std::vector<unsigned char> out;
+  for (int z = 0; z < depth; ++z) {
+    const auto* image = static_cast<const unsigned char*>(pixels) + std::size_t(c.unpack.skip_images + z) * stride;
+    const std::vector<unsigned char> one = copy_image(c.unpack, width, height, components, size, image);
+    out.insert(out.end(), one.begin(), one.end());
+  }
+  return out;
 }
 
 const void* data_or_null(const std::vector<unsigned char>& image) { return image.empty() ? nullptr : image.data(); }
 
 }  // namespace
 
-bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height) {
+bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height, int depth) {
   StoredFormat format;
   if (!stored_format(internal_format, format)) return false;
   const std::size_t l = std::size_t(level);
   if (t.images.size() <= l) t.images.resize(l + 1);
   if (t.texture.levels.size() <= l) t.texture.levels.resize(l + 1);
-  const std::size_t texels = std::size_t(width) * std::size_t(height);
+  const std::size_t texels = std::size_t(width) * std::size_t(height) * std::size_t(depth);
   TexImage& img = t.images[l];
   img = TexImage{};
   img.defined = true;
-  img.width = width, img.height = height;
+  img.width = width, img.height = height, img.depth = depth;
   img.internal_format = internal_format;
   img.format = format;
   if (format.wide()) img.wide.assign(texels * std::size_t(format.components), 0);
   TextureLevel& core = t.texture.levels[l];
-  core.width = width, core.height = height;
+  core.width = width, core.height = height, core.depth = depth;
   core.rgba.assign(texels * 4, 0);
   if (level == 0) t.texture.format = format.base;
   return true;
@@ -174,13 +214,15 @@ std::uint16_t stored_value(const RgbaImage& image, float v, int bits) {
 
 }  // namespace
 
-void store_texels(const RgbaImage& image, int x0, int y0, TexImage& level, TextureLevel& core) {
+void store_texels(const RgbaImage& image, int x0, int y0, int z0, TexImage& level, TextureLevel& core) {
   const StoredFormat& f = level.format;
   const std::size_t n = std::size_t(f.components);
   const float* in = image.rgba.data();
-  for (int y = 0; y < image.height; ++y) {
+  for (int yz = 0; yz < image.height * image.depth; ++yz) {  // rows of every image in turn
+    const int y = yz % image.height, z = yz / image.height;
+    const std::size_t row = std::size_t(z0 + z) * std::size_t(level.height) + std::size_t(y0 + y);
     for (int x = 0; x < image.width; ++x, in += 4) {
-      const std::size_t texel = std::size_t(y0 + y) * std::size_t(level.width) + std::size_t(x0 + x);
+      const std::size_t texel = row * std::size_t(level.width) + std::size_t(x0 + x);
       float comps[4];
       base_components(f.base, in, comps);
       std::uint8_t bytes[4];
@@ -197,22 +239,32 @@ void store_texels(const RgbaImage& image, int x0, int y0, TexImage& level, Textu
 
 void exec::TexImage1D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLint border,
                       GLenum format, GLenum type, const void* pixels) {
-  tex_image(c, 1, target, level, internalformat, width, 1, border, format, type, pixels);
+  tex_image(c, 1, target, level, internalformat, width, 1, 1, border, format, type, pixels);
 }
 
 void exec::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                       GLint border, GLenum format, GLenum type, const void* pixels) {
-  tex_image(c, 2, target, level, internalformat, width, height, border, format, type, pixels);
+  tex_image(c, 2, target, level, internalformat, width, height, 1, border, format, type, pixels);
 }
 
 void exec::TexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,
                          GLenum type, const void* pixels) {
-  tex_sub_image(c, 1, target, level, xoffset, 0, width, 1, format, type, pixels);
+  tex_sub_image(c, 1, target, level, xoffset, 0, 0, width, 1, 1, format, type, pixels);
 }
 
 void exec::TexSubImage2D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
                          GLsizei height, GLenum format, GLenum type, const void* pixels) {
-  tex_sub_image(c, 2, target, level, xoffset, yoffset, width, height, format, type, pixels);
+  tex_sub_image(c, 2, target, level, xoffset, yoffset, 0, width, height, 1, format, type, pixels);
+}
+
+void exec::TexImage3D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                      GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  tex_image(c, 3, target, level, internalformat, width, height, depth, border, format, type, pixels);
+}
+
+void exec::TexSubImage3D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                         GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  tex_sub_image(c, 3, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type, pixels);
 }
 
 // Display-list savers (gl/generated/save.hpp). Proxies are queries: executed at once and
@@ -238,6 +290,26 @@ void save::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internalfo
   const std::vector<unsigned char> image = list_image(c, width, height, format, type, pixels);
   record::TexImage2D(c, target, level, internalformat, width, height, border, format, type, data_or_null(image),
                      image.size());
+}
+
+void save::TexImage3D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                      GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
+  if (target == GL_PROXY_TEXTURE_3D) {
+    if (c.lists.mode == GL_COMPILE) {
+      run::TexImage3D(c, target, level, internalformat, width, height, depth, border, format, type, pixels);
+    }
+    return;
+  }
+  const std::vector<unsigned char> image = list_image(c, width, height, format, type, pixels, depth);
+  record::TexImage3D(c, target, level, internalformat, width, height, depth, border, format, type,
+                     data_or_null(image), image.size());
+}
+
+void save::TexSubImage3D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint zoffset,
+                         GLsizei width, GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
+  const std::vector<unsigned char> image = list_image(c, width, height, format, type, pixels, depth);
+  record::TexSubImage3D(c, target, level, xoffset, yoffset, zoffset, width, height, depth, format, type,
+                        data_or_null(image), image.size());
 }
 
 void save::TexSubImage1D(GlContext& c, GLenum target, GLint level, GLint xoffset, GLsizei width, GLenum format,

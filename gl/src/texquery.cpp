@@ -1,5 +1,5 @@
-// Texture image queries (GL 1.1 section 6.1.4): glGetTexLevelParameter{iv,fv} for the
-// texture and proxy targets, and glGetTexImage, which packs a level's texels as glReadPixels
+// Texture image queries (GL 1.1 section 6.1.4; 3D images of GL 1.2): glGetTexLevelParameter{iv,fv}
+// for the texture and proxy targets, and glGetTexImage, which packs a level's texels as glReadPixels
 // packs pixels (every format and type, the pack state). Values, errors and the conversions
 // are Mesa's (texparam.c, texgetimage.c), measured on Debian's Mesa 22: an undefined level
 // reports GL_RGBA and zero sizes, luminance is read back as R alone, integers are converted
@@ -15,15 +15,20 @@
 namespace shadelab::gl {
 namespace {
 
-constexpr GLenum kTextureDepth = 0x8071;  // GL 1.2's GL_TEXTURE_DEPTH, which Mesa answers too
+constexpr GLenum kTextureDepth = GL_TEXTURE_DEPTH;  // GL 1.2
 
 const std::vector<TexImage>* level_images(GlContext& c, GLenum target) {
   switch (target) {
-    case GL_TEXTURE_1D: case GL_TEXTURE_2D: return &bound_texture(c, target)->images;
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: return &bound_texture(c, target)->images;
     case GL_PROXY_TEXTURE_1D: return &c.textures.proxy_1d;
     case GL_PROXY_TEXTURE_2D: return &c.textures.proxy_2d;
+    case GL_PROXY_TEXTURE_3D: return &c.textures.proxy_3d;
     default: return nullptr;
   }
+}
+
+int target_levels(GLenum target) {
+  return target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D ? kMax3dTextureLevels : kMaxTextureLevels;
 }
 
 bool is_level_pname(GLenum pname) {
@@ -52,13 +57,13 @@ GLint reported_internal_format(GLint internal) {
   }
 }
 
-// GL_TEXTURE_DEPTH (GL 1.2's) is accepted as Mesa accepts it: 1 for a defined image.
+// GL_TEXTURE_DEPTH (GL 1.2): a 3D image's depth, 1 for a defined 1D or 2D image (as Mesa).
 GLint level_parameter(const TexImage& img, GLenum pname) {
   if (!img.defined) return pname == GL_TEXTURE_INTERNAL_FORMAT ? GL_RGBA : 0;
   switch (pname) {
     case GL_TEXTURE_WIDTH: return img.width;
     case GL_TEXTURE_HEIGHT: return img.height;
-    case kTextureDepth: return 1;
+    case kTextureDepth: return img.depth;
     case GL_TEXTURE_BORDER: return img.border;
     case GL_TEXTURE_INTERNAL_FORMAT: return reported_internal_format(img.internal_format);
     case GL_TEXTURE_COMPRESSED: return GL_FALSE;  // GL 1.3: no image is ever compressed
@@ -70,7 +75,7 @@ template <class T>
 void get_level_parameter(GlContext& c, GLenum target, GLint level, GLenum pname, T* params) {
   const std::vector<TexImage>* images = level_images(c, target);
   if (!images) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (level < 0 || level >= target_levels(target)) return c.set_error(GL_INVALID_VALUE);
   // GL 1.3: no image is compressed, so none has a compressed size (Mesa's code).
   if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) return c.set_error(GL_INVALID_OPERATION);
   if (!is_level_pname(pname)) return c.set_error(GL_INVALID_ENUM);
@@ -159,8 +164,8 @@ void pack_component(const Stored& s, GLenum type, bool swap, unsigned char* p) {
 }
 
 void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= target_levels(target)) return c.set_error(GL_INVALID_VALUE);
   const bool known_format = color_format_components(format) != 0 || format == GL_COLOR_INDEX ||
                             format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
   if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
@@ -174,22 +179,28 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
   const int n = color_format_components(format), size = pixel_type_size(type);
   const PackedType* packed = packed_type(type);
   const PixelLayout layout = pixel_layout(c.pack, elements_per_pixel(format, type), size, img.width);
-  auto* out = static_cast<unsigned char*>(pixels);
-  for (int y = 0; y < img.height; ++y) {
-    for (int x = 0; x < img.width; ++x) {
-      Stored rgba[4], comps[4];
-      texel_rgba(img, core, std::size_t(y) * std::size_t(img.width) + std::size_t(x), rgba);
-      select_components(format, rgba, comps);
-      unsigned char* p = out + layout.offset(x, y);
-      if (packed) {  // one element: the components' fields, from their bytes as Mesa converts them
-        std::uint32_t e = 0;
-        for (int k = 0; k < n; ++k) e |= packed->field_from_byte(stored_to_byte(comps[k].k, comps[k].bits), k) << packed->shift(k);
-        if (size == 1) *p = static_cast<unsigned char>(e);
-        else if (size == 2) put(p, GLushort(e), c.pack.swap_bytes);
-        else put(p, GLuint(e), c.pack.swap_bytes);
-        continue;
+  // 3D images one after the other, GL_PACK_IMAGE_HEIGHT rows apart, after GL_PACK_SKIP_IMAGES.
+  const bool three_d = target == GL_TEXTURE_3D;
+  const std::size_t stride = three_d ? image_stride(c.pack, format, type, img.width, img.height) : 0;
+  for (int z = 0; z < img.depth; ++z) {
+    auto* out = static_cast<unsigned char*>(pixels) + (three_d ? std::size_t(c.pack.skip_images + z) * stride : 0);
+    for (int y = 0; y < img.height; ++y) {
+      for (int x = 0; x < img.width; ++x) {
+        Stored rgba[4], comps[4];
+        const std::size_t row = std::size_t(z) * std::size_t(img.height) + std::size_t(y);
+        texel_rgba(img, core, row * std::size_t(img.width) + std::size_t(x), rgba);
+        select_components(format, rgba, comps);
+        unsigned char* p = out + layout.offset(x, y);
+        if (packed) {  // one element: the components' fields, from their bytes as Mesa converts them
+          std::uint32_t e = 0;
+          for (int k = 0; k < n; ++k) e |= packed->field_from_byte(stored_to_byte(comps[k].k, comps[k].bits), k) << packed->shift(k);
+          if (size == 1) *p = static_cast<unsigned char>(e);
+          else if (size == 2) put(p, GLushort(e), c.pack.swap_bytes);
+          else put(p, GLuint(e), c.pack.swap_bytes);
+          continue;
+        }
+        for (int k = 0; k < n; ++k) pack_component(comps[k], type, c.pack.swap_bytes, p + k * size);
       }
-      for (int k = 0; k < n; ++k) pack_component(comps[k], type, c.pack.swap_bytes, p + k * size);
     }
   }
 }

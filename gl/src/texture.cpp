@@ -1,7 +1,10 @@
 // Texture objects, their parameters and the texture environment (GL 1.1 sections 3.8.3,
-// 3.8.8, 3.8.9): glGen/Bind/Delete/IsTexture, glPrioritizeTextures, glAreTexturesResident,
-// glTexParameter*, glTexEnv* and their queries, and which texture the pipeline samples. Images
-// are teximage.cpp's; sampling and the environment's arithmetic are the core's (texture.hpp).
+// 3.8.8, 3.8.9; GL 1.5 sections 3.8.4, 3.8.8, 3.8.10, 3.8.13): glGen/Bind/Delete/IsTexture,
+// glPrioritizeTextures, glAreTexturesResident, glTexParameter* (with GL 1.2's LOD clamps and
+// level range, GL 1.3's border clamp, GL 1.4's mirrored repeat, LOD bias and mipmap
+// generation), glTexEnv* (GL 1.4's GL_TEXTURE_FILTER_CONTROL bias) and their queries, and
+// which texture the pipeline samples. Images are teximage.cpp's; sampling and the
+// environment's arithmetic are the core's (texture.hpp).
 #include "gl/src/texture.hpp"
 
 #include <algorithm>
@@ -42,7 +45,14 @@ GLenum filter_enum(TextureFilter f) {
 }
 
 GLenum wrap_enum(TextureWrap w) {
-  return w == TextureWrap::kRepeat ? GL_REPEAT : w == TextureWrap::kClamp ? GL_CLAMP : GL_CLAMP_TO_EDGE;
+  switch (w) {
+    case TextureWrap::kRepeat: return GL_REPEAT;
+    case TextureWrap::kClamp: return GL_CLAMP;
+    case TextureWrap::kClampToEdge: return GL_CLAMP_TO_EDGE;
+    case TextureWrap::kClampToBorder: return GL_CLAMP_TO_BORDER;
+    case TextureWrap::kMirroredRepeat: return GL_MIRRORED_REPEAT;
+  }
+  return GL_REPEAT;
 }
 
 // An enum-valued parameter given as a float: glTexParameterf rounds it, the vector forms
@@ -54,8 +64,20 @@ GLint enum_param(float v, bool rounded) {
 }
 
 void set_wrap(GlContext& c, TextureWrap& wrap, GLint e) {
-  if (e != GL_REPEAT && e != GL_CLAMP && e != GL_CLAMP_TO_EDGE) return c.set_error(GL_INVALID_ENUM);
-  wrap = e == GL_REPEAT ? TextureWrap::kRepeat : e == GL_CLAMP ? TextureWrap::kClamp : TextureWrap::kClampToEdge;
+  switch (e) {
+    case GL_REPEAT: wrap = TextureWrap::kRepeat; return;
+    case GL_CLAMP: wrap = TextureWrap::kClamp; return;
+    case GL_CLAMP_TO_EDGE: wrap = TextureWrap::kClampToEdge; return;
+    case GL_CLAMP_TO_BORDER: wrap = TextureWrap::kClampToBorder; return;
+    case GL_MIRRORED_REPEAT: wrap = TextureWrap::kMirroredRepeat; return;
+    default: return c.set_error(GL_INVALID_ENUM);
+  }
+}
+
+// GL_TEXTURE_BASE_LEVEL and GL_TEXTURE_MAX_LEVEL: any level >= 0 (Mesa's texparam.c).
+void set_level(GlContext& c, int& level, GLint e) {
+  if (e < 0) return c.set_error(GL_INVALID_VALUE);
+  level = e;
 }
 
 // glTexParameter with its values as floats (4 for the border colour; `rounded`: see
@@ -70,6 +92,14 @@ void tex_parameter(GlContext& c, GLenum target, GLenum pname, const float* v, bo
   switch (pname) {
     case GL_TEXTURE_WRAP_S: return set_wrap(c, x.wrap_s, e);
     case GL_TEXTURE_WRAP_T: return set_wrap(c, x.wrap_t, e);
+    case GL_TEXTURE_WRAP_R: return set_wrap(c, x.wrap_r, e);
+    case GL_TEXTURE_BASE_LEVEL: return set_level(c, x.base_level, e);
+    case GL_TEXTURE_MAX_LEVEL: return set_level(c, x.max_level, e);
+    // The LOD values are kept as given (Mesa's sampler takes max(min_lod, 0)); NaN as 0.
+    case GL_TEXTURE_MIN_LOD: x.min_lod = finite_or_zero(v[0]); return;
+    case GL_TEXTURE_MAX_LOD: x.max_lod = finite_or_zero(v[0]); return;
+    case GL_TEXTURE_LOD_BIAS: x.lod_bias = finite_or_zero(v[0]); return;
+    case GL_GENERATE_MIPMAP: t->generate_mipmap = e != 0; return;
     case GL_TEXTURE_MIN_FILTER:
       if (!is_min_filter(e)) return c.set_error(GL_INVALID_ENUM);
       x.min_filter = filter_of(e);
@@ -93,6 +123,13 @@ int get_tex_parameter(const TextureObject& t, GLenum pname, float* v) {
   switch (pname) {
     case GL_TEXTURE_WRAP_S: v[0] = float(wrap_enum(x.wrap_s)); return 1;
     case GL_TEXTURE_WRAP_T: v[0] = float(wrap_enum(x.wrap_t)); return 1;
+    case GL_TEXTURE_WRAP_R: v[0] = float(wrap_enum(x.wrap_r)); return 1;
+    case GL_TEXTURE_BASE_LEVEL: v[0] = float(x.base_level); return 1;
+    case GL_TEXTURE_MAX_LEVEL: v[0] = float(x.max_level); return 1;
+    case GL_TEXTURE_MIN_LOD: v[0] = x.min_lod; return 1;
+    case GL_TEXTURE_MAX_LOD: v[0] = x.max_lod; return 1;
+    case GL_TEXTURE_LOD_BIAS: v[0] = x.lod_bias; return 1;
+    case GL_GENERATE_MIPMAP: v[0] = t.generate_mipmap ? 1.0f : 0.0f; return 1;
     case GL_TEXTURE_MIN_FILTER: v[0] = float(filter_enum(x.min_filter)); return 1;
     case GL_TEXTURE_MAG_FILTER: v[0] = float(filter_enum(x.mag_filter)); return 1;
     case GL_TEXTURE_BORDER_COLOR: for (int i = 0; i < 4; ++i) v[i] = x.border_color[i]; return 4;
@@ -103,7 +140,15 @@ int get_tex_parameter(const TextureObject& t, GLenum pname, float* v) {
 }
 
 // glTexEnv (GL 1.1 section 3.8.9). A scalar GL_TEXTURE_ENV_COLOR sets (v, 0, 0, 0), as Mesa's.
+// GL 1.4's GL_TEXTURE_FILTER_CONTROL target holds the unit's GL_TEXTURE_LOD_BIAS, kept as
+// given (section 3.8.8 clamps the sum when sampling).
 void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
+  if (target == GL_TEXTURE_FILTER_CONTROL) {
+    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
+    if (!v) return c.set_error(GL_INVALID_VALUE);
+    c.textures.lod_bias = finite_or_zero(v[0]);
+    return;
+  }
   if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
   if (!v) return c.set_error(GL_INVALID_VALUE);
   if (pname == GL_TEXTURE_ENV_MODE) {
@@ -117,12 +162,18 @@ void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
   }
 }
 
+// glGetTexEnv. The bias is rounded by glGetTexEnviv, as the specification converts floats
+// (section 6.1.2); Mesa 22 truncates it.
 template <class T>
 void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
-  if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
   float v[4] = {float(c.textures.env_mode), 0, 0, 0};
   int n = 1;
-  if (pname == GL_TEXTURE_ENV_COLOR) {
+  if (target == GL_TEXTURE_FILTER_CONTROL) {
+    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
+    v[0] = c.textures.lod_bias;
+  } else if (target != GL_TEXTURE_ENV) {
+    return c.set_error(GL_INVALID_ENUM);
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) v[i] = c.textures.env_color[i];
     n = 4;
   } else if (pname != GL_TEXTURE_ENV_MODE) {
@@ -154,27 +205,30 @@ void to_floats(const T* in, int n, bool color, float* out) {
   }
 }
 
-// The texture of a target if it is complete (GL 1.1 section 3.8.9; every level of the
-// mipmap chain with level 0's internal format as well, as Mesa requires).
+// The texture of a target if it is complete (GL 1.5 section 3.8.10; every level of the
+// mipmap chain with the base level's internal format as well, as Mesa requires).
 const Texture* complete_texture(TextureObject& t) {
-  if (!t.texture.complete() || t.images.empty()) return nullptr;
+  if (!t.texture.complete()) return nullptr;
+  const std::size_t base = std::size_t(t.texture.base_level);
+  if (t.images.size() <= base) return nullptr;
   const bool mipmapped = t.texture.min_filter != TextureFilter::kNearest && t.texture.min_filter != TextureFilter::kLinear;
-  const int last = mipmapped ? t.texture.last_level() : 0;
-  for (int i = 1; i <= last; ++i) {
-    if (t.images[std::size_t(i)].internal_format != t.images[0].internal_format) return nullptr;
+  const int last = mipmapped ? t.texture.last_level() : t.texture.base_level;
+  for (int i = t.texture.base_level + 1; i <= last; ++i) {
+    if (t.images[std::size_t(i)].internal_format != t.images[base].internal_format) return nullptr;
   }
+  t.texture.format = t.images[base].format.base;  // the environment follows the base level's
   return &t.texture;
 }
 
 }  // namespace
 
 TextureObject* bound_texture(GlContext& c, GLenum target) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return nullptr;
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return nullptr;
   return c.textures.binding(target).object.get();
 }
 
-// GL 1.1 section 3.8.9: the 2D texture when enabled, else the 1D one. Like Mesa, an enabled
-// target whose texture is incomplete gives way to the next enabled one.
+// GL 1.5 section 3.8.15: the 3D texture when enabled, else the 2D one, else the 1D one. Like
+// Mesa, an enabled target whose texture is incomplete gives way to the next enabled one.
 namespace {
 
 TextureEnvMode env_mode(GLenum mode) {
@@ -189,6 +243,10 @@ TextureEnvMode env_mode(GLenum mode) {
 const Texture* active_texture(GlContext& c, std::shared_ptr<const TextureObject>* object) {
   TextureState& s = c.textures;
   const Texture* t = nullptr;
+  if (s.enabled_3d && s.binding_3d.object && (t = complete_texture(*s.binding_3d.object))) {
+    if (object) *object = s.binding_3d.object;
+    return t;
+  }
   if (s.enabled_2d && s.binding_2d.object && (t = complete_texture(*s.binding_2d.object))) {
     if (object) *object = s.binding_2d.object;
     return t;
@@ -208,6 +266,7 @@ void texture_draw_state(GlContext& c, ShadeState& shade) {
   shade.texture = active_texture(c, &object);
   shade.texture_env = env_mode(c.textures.env_mode);
   shade.texture_env_color = c.textures.env_color;
+  shade.texture_lod_bias = c.textures.lod_bias;
   if (!shade.texture) return;
   shade.texture_kept = true;
   std::vector<std::shared_ptr<const TextureObject>>& kept = c.textures_of_waiting_draws;
@@ -241,7 +300,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
   for (GLsizei i = 0; i < n; ++i) {
     if (textures[i] == 0) continue;
     c.textures.names->objects.erase(textures[i]);
-    for (TextureBinding* b : {&c.textures.binding_1d, &c.textures.binding_2d}) {
+    for (TextureBinding* b : {&c.textures.binding_1d, &c.textures.binding_2d, &c.textures.binding_3d}) {
       if (b->name == textures[i]) *b = {0, b->default_object, b->default_object};
     }
   }
@@ -249,7 +308,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
 
 // A name bound to one target cannot be bound to the other: GL_INVALID_OPERATION.
 void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D) return c.set_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return c.set_error(GL_INVALID_ENUM);
   TextureBinding& b = c.textures.binding(target);
   if (texture == 0) {
     b.name = 0;
@@ -261,7 +320,7 @@ void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
   if (obj->target != 0 && obj->target != target) return c.set_error(GL_INVALID_OPERATION);
   if (obj->target == 0) {
     obj->target = target;
-    obj->texture.dimensions = target == GL_TEXTURE_1D ? 1 : 2;
+    obj->texture.dimensions = texture_dimensions(target);
   }
   b.name = texture;
   b.object = obj;

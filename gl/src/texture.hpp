@@ -12,12 +12,12 @@
 
 namespace shadelab::gl {
 
-/// The object bound to GL_TEXTURE_1D or GL_TEXTURE_2D (the target's default object while
-/// name 0 is bound); nullptr for any other target.
+/// The object bound to GL_TEXTURE_1D, GL_TEXTURE_2D or GL_TEXTURE_3D (the target's default
+/// object while name 0 is bound); nullptr for any other target.
 TextureObject* bound_texture(GlContext& c, GLenum target);
 
-/// The texture to apply (GL 1.1 section 3.8.9), or nullptr: GL_TEXTURE_2D when enabled and
-/// complete, else GL_TEXTURE_1D when enabled and complete (an incomplete texture is as if
+/// The texture to apply (GL 1.5 section 3.8.15), or nullptr: GL_TEXTURE_3D when enabled and
+/// complete, else GL_TEXTURE_2D, else GL_TEXTURE_1D (an incomplete texture is as if
 /// its target were disabled, as in Mesa).
 const Texture* active_texture(GlContext& c);
 
@@ -36,19 +36,25 @@ void texture_changing(GlContext& c, const TextureObject& t);
 /// truncates (measured: its copy renders into the texture) where glTexImage rounds.
 struct RgbaImage {
   int width = 0, height = 0;
+  int depth = 1;  // images of `height` rows, one after the other
   std::vector<float> rgba;
   bool exact_bytes = false;
   bool from_framebuffer = false;
 };
 
-/// Stores `image` as texels (converted to `image_format`'s storage) at (x, y) of a level
+/// Stores `image` as texels (converted to `image_format`'s storage) at (x, y, z) of a level
 /// whose storage is described by `level` and `core`, both already sized.
-void store_texels(const RgbaImage& image, int x, int y, TexImage& level, TextureLevel& core);
+void store_texels(const RgbaImage& image, int x, int y, int z, TexImage& level, TextureLevel& core);
 
 /// Makes level `level` of `t` a width x height image of `internal_format` (contents zero),
 /// with the core's format and dimensions following level 0; false (nothing changed) when the
 /// internal format is not one.
-bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height);
+bool define_level(TextureObject& t, int level, GLint internal_format, int width, int height, int depth = 1);
+
+/// GL_GENERATE_MIPMAP (GL 1.4, mipmap.cpp): call after level `level` of `t` was specified or
+/// its texels changed; when it is the base level of a texture generating its mipmaps (and
+/// below GL_TEXTURE_MAX_LEVEL), the levels after it are made again from it.
+void level_changed(TextureObject& t, int level);
 
 /// The number of levels a texture of `target` may have (GL_MAX_TEXTURE_SIZE's log2 + 1).
 inline constexpr int max_texture_levels() { return kMaxTextureLevels; }

@@ -1,6 +1,6 @@
 // The texture state of a context (GL 1.1 section 3.8, tables 6.15-6.16): texture objects by
 // name, shared between contexts that share them, each with its levels as glTexImage specified
-// them and in the core's form, the bindings of the 1D and 2D targets, the texture environment
+// them and in the core's form, the bindings of the 1D, 2D and 3D targets, the texture environment
 // and glTexGen's planes. Plain data; the commands are texture.cpp's, teximage.cpp's and their
 // neighbours', and the pipeline samples the core's Texture.
 #pragma once
@@ -26,6 +26,7 @@ namespace shadelab::gl {
 struct TexImage {
   bool defined = false;  // specified by glTexImage or glCopyTexImage (a proxy: accepted)
   int width = 0, height = 0, border = 0;
+  int depth = 1;  // images of a 3D level
   GLint internal_format = GL_RGBA;  // as given; Mesa reports GL_RGBA for an undefined image
   StoredFormat format;
   std::vector<std::uint16_t> wide;  // format.components per texel when format.wide()
@@ -34,10 +35,11 @@ struct TexImage {
 /// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
 /// levels and parameters in the core's form (what the pipeline samples), and what GL reports.
 struct TextureObject {
-  GLenum target = 0;  // GL_TEXTURE_1D or GL_TEXTURE_2D once bound; 0 before
+  GLenum target = 0;  // GL_TEXTURE_1D, GL_TEXTURE_2D or GL_TEXTURE_3D once bound; 0 before
   Texture texture;
   std::vector<TexImage> images;  // per level
   float priority = 1.0f;
+  bool generate_mipmap = false;  // GL_GENERATE_MIPMAP (GL 1.4): mipmap.cpp
 };
 
 /// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
@@ -62,18 +64,28 @@ struct TexGenCoord {
   glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
 };
 
+/// The core's dimensions of a texture target: 1, 2 or 3.
+inline int texture_dimensions(GLenum target) {
+  return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
+}
+
 struct TextureState {
-  bool enabled_1d = false, enabled_2d = false;  // GL_TEXTURE_1D, GL_TEXTURE_2D
-  TextureBinding binding_1d, binding_2d;
+  bool enabled_1d = false, enabled_2d = false, enabled_3d = false;  // GL_TEXTURE_1D, _2D, _3D
+  TextureBinding binding_1d, binding_2d, binding_3d;
   // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
-  std::vector<TexImage> proxy_1d, proxy_2d;
+  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d;
   std::shared_ptr<TextureNames> names;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
+  float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
   std::array<TexGenCoord, 4> gen;  // s, t, r, q
 
-  TextureBinding& binding(GLenum target) { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
-  const TextureBinding& binding(GLenum target) const { return target == GL_TEXTURE_1D ? binding_1d : binding_2d; }
+  TextureBinding& binding(GLenum target) {
+    return target == GL_TEXTURE_1D ? binding_1d : target == GL_TEXTURE_3D ? binding_3d : binding_2d;
+  }
+  const TextureBinding& binding(GLenum target) const {
+    return target == GL_TEXTURE_1D ? binding_1d : target == GL_TEXTURE_3D ? binding_3d : binding_2d;
+  }
   bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
 };
 

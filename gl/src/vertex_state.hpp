@@ -47,6 +47,10 @@ struct Primitive {
   // The vertices' texture coordinates (s, t, r, q) after generation and the texture matrix,
   // one per vertex while `textured` (else empty); q divides per fragment.
   std::vector<glm::vec4> texcoords;
+  // The vertices' fog coordinates (their absolute values), one per vertex while fog uses them
+  // (GL_FOG_COORDINATE source, fixed at glBegin), else empty.
+  std::vector<float> fog_coords;
+  bool fog_coordinates = false;
   bool odd_strip_start = false;  // a flushed triangle strip continues with an odd triangle
   // Begun by a display list being executed: llvmpipe then splits quads from their second
   // vertex (docs/gl-conformance.md).
@@ -86,6 +90,8 @@ struct ArrayScratch {
   detail::ScratchVector<glm::vec3> normals;
   detail::ScratchVector<glm::vec4> texcoords;      // (s, t, r, q) after the texture matrix
   detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
+  detail::ScratchVector<glm::vec3> secondary;      // GL_COLOR_SUM unlit: clamped secondary colours
+  detail::ScratchVector<float> fog;                // GL_FOG_COORDINATE fog: |fog coordinate|
   detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
   detail::ScratchVector<std::uint8_t> finite;     // per vertex: its clip coordinates are finite
   detail::ScratchVector<Triangle> triangles;
@@ -100,6 +106,7 @@ struct ImmediateScratch {
   detail::ScratchVector<glm::vec4> positions, colors, back_colors;
   detail::ScratchVector<glm::vec3> normals, secondary, back_secondary;
   detail::ScratchVector<glm::vec4> texcoords;
+  detail::ScratchVector<float> fog;
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;
   std::vector<std::uint8_t> triangle_flags;  // polygon modes: per triangle, its edges

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "shadelab/scene.hpp"
@@ -17,7 +18,9 @@
 namespace shadelab {
 
 enum class CompareFunc { kNever, kLess, kEqual, kLequal, kGreater, kNotequal, kGequal, kAlways };
-enum class StencilOp { kKeep, kZero, kReplace, kIncr, kDecr, kInvert };
+/// glStencilOp's operations: GL 1.1's (kIncr and kDecr clamp to [0, 255]), then GL 1.4's
+/// kIncrWrap and kDecrWrap, which wrap around modulo 256.
+enum class StencilOp { kKeep, kZero, kReplace, kIncr, kDecr, kInvert, kIncrWrap, kDecrWrap };
 
 /// glStencilFunc / glStencilOp / glStencilMask.
 struct StencilState {
@@ -120,10 +123,16 @@ struct LineState {
   std::uint16_t factor = 1;        ///< glLineStipple's repeat, 1 to 256
 };
 
-/// How points are drawn (GL 1.1 section 3.3).
+/// How points are drawn (GL 1.1 section 3.3; GL 1.4's point parameters).
 struct PointState {
   float size = 1.0f;    ///< glPointSize, pixels; aliased points round it (at least 1)
   bool smooth = false;  ///< GL_POINT_SMOOTH: coverage multiplies the fragment's alpha
+  /// GL_POINT_DISTANCE_ATTENUATION (a, b, c): unless (1, 0, 0), each point's size is derived
+  /// from its eye-space distance d = |z_eye| (not divided by w): size / sqrt(a + b d + c d^2),
+  /// clamped to [min_size, max_size] (GL 1.4 section 3.3, in Mesa's order of operations).
+  glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
+  float min_size = 0.0f, max_size = 255.0f;  ///< pixels
+  bool attenuated() const { return attenuation != glm::vec3(1.0f, 0.0f, 0.0f); }
 };
 
 /// User clip planes (GL 1.1 section 2.11) in EYE space: a point p is inside plane i when

@@ -2,6 +2,7 @@
 // code; holds no file positions and no unvalidated values. World space unless stated.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,17 +29,42 @@ enum class ShadingMode {
 
 enum class CullMode { kNone, kBack, kFront };
 
-/// OpenGL 1.1 blend factors (glBlendFunc).
-enum class BlendFactor {
+/// OpenGL blend factors (glBlendFunc, glBlendFuncSeparate): GL 1.1's, then the constant colour
+/// factors of GL 1.4 (the imaging subset's, made core). Every factor is accepted as a source
+/// and a destination factor (GL 1.4 allows the colour of the same side too).
+enum class BlendFactor : std::uint8_t {
   kZero, kOne, kSrcColor, kOneMinusSrcColor, kDstColor, kOneMinusDstColor,
   kSrcAlpha, kOneMinusSrcAlpha, kDstAlpha, kOneMinusDstAlpha, kSrcAlphaSaturate,
+  kConstantColor, kOneMinusConstantColor, kConstantAlpha, kOneMinusConstantAlpha,
 };
 
-/// result = src * src_factor + dst * dst_factor, when enabled.
+/// glBlendEquation (GL 1.4 section 4.1.7): how the weighted source and destination combine.
+/// kMin and kMax take the smaller or larger of the two colours themselves, ignoring the factors.
+enum class BlendEquation : std::uint8_t { kAdd, kSubtract, kReverseSubtract, kMin, kMax };
+
+/// When enabled, each channel becomes `equation(src * src_factor, dst * dst_factor)`: red,
+/// green and blue with `src` / `dst`, alpha with `src_alpha` / `dst_alpha`
+/// (glBlendFuncSeparate). `color` is glBlendColor's constant, in [0, 1]; the pipeline uses it
+/// in the colour buffer's precision (8 bits, as llvmpipe stores it).
 struct BlendState {
   bool enabled = false;
   BlendFactor src = BlendFactor::kSrcAlpha;
   BlendFactor dst = BlendFactor::kOneMinusSrcAlpha;
+  BlendFactor src_alpha = BlendFactor::kSrcAlpha;
+  BlendFactor dst_alpha = BlendFactor::kOneMinusSrcAlpha;
+  BlendEquation equation = BlendEquation::kAdd;
+  glm::vec4 color{0.0f};
+
+  BlendState() = default;
+  /// glBlendFunc's blend: the same factors for every channel, added.
+  BlendState(bool on, BlendFactor s, BlendFactor d) : enabled(on), src(s), dst(d), src_alpha(s), dst_alpha(d) {}
+
+  /// The usual transparency: glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), added, for
+  /// every channel (the fast pipeline's blend kernels).
+  bool source_over() const {
+    return src == BlendFactor::kSrcAlpha && dst == BlendFactor::kOneMinusSrcAlpha && src_alpha == src &&
+           dst_alpha == dst && equation == BlendEquation::kAdd;
+  }
 };
 
 /// Look-at camera. Angles in degrees; distances in world units.

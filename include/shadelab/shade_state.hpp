@@ -66,6 +66,9 @@ struct ShadeState {
   const Texture* texture = nullptr;
   TextureEnvMode texture_env = TextureEnvMode::kModulate;
   glm::vec4 texture_env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend, in [0, 1]
+  /// The texture unit's GL_TEXTURE_LOD_BIAS (GL 1.4, glTexEnv GL_TEXTURE_FILTER_CONTROL),
+  /// added to the texture's own (texture_lod).
+  float texture_lod_bias = 0.0f;
   /// The caller keeps `*texture` alive and unchanged until the context's finish_draws (the GL
   /// library finishes the waiting draws before it changes a texture and keeps the textures of
   /// waiting draws alive): a textured draw may then wait (PipelineContext::set_deferred).

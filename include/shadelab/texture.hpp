@@ -1,18 +1,22 @@
-// 1D and 2D textures as OpenGL 1.1 samples them (with llvmpipe's choices where GL leaves one):
+// 1D, 2D and 3D textures as OpenGL 1.4 samples them (with llvmpipe's choices where GL leaves one):
 // RGBA8 mipmap levels, wrap modes with the border colour, nearest/linear filtering with
-// mipmaps, the level of detail of a 2x2 pixel quad, and the texture environment (modulate,
-// replace, decal, blend). Sampling only: no file reading (image.hpp), no rasterization here.
+// mipmaps, the level of detail of a 2x2 pixel quad with its bias and clamps and the base and
+// maximum levels, and the texture environment (modulate, replace, decal, blend). Sampling
+// only: no file reading (image.hpp), no rasterization here.
 #pragma once
 
 #include <cstdint>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 namespace shadelab {
 
-enum class TextureWrap { kRepeat, kClamp, kClampToEdge };
+/// GL_TEXTURE_WRAP_S/T (GL 1.4 section 3.8.7): GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE (1.2),
+/// GL_CLAMP_TO_BORDER (1.3), GL_MIRRORED_REPEAT (1.4).
+enum class TextureWrap { kRepeat, kClamp, kClampToEdge, kClampToBorder, kMirroredRepeat };
 enum class TextureFilter {
   kNearest, kLinear,
   kNearestMipmapNearest, kLinearMipmapNearest, kNearestMipmapLinear, kLinearMipmapLinear,
@@ -26,54 +30,102 @@ enum class TextureFormat { kAlpha, kLuminance, kLuminanceAlpha, kIntensity, kRgb
 
 struct TextureLevel {
   int width = 0, height = 0;       ///< texels, without a border (1D levels: height 1)
-  std::vector<std::uint8_t> rgba;  ///< row 0 is t = 0 (the first row given to glTexImage2D)
+  /// Row 0 is t = 0 (the first row given to glTexImage2D); a 3D level holds `depth` images
+  /// of `height` rows one after the other, image 0 at r = 0.
+  std::vector<std::uint8_t> rgba;
+  int depth = 1;  ///< images (3D levels; 1 otherwise)
 };
 
 struct Texture {
   std::vector<TextureLevel> levels;  ///< level 0 first
   TextureFormat format = TextureFormat::kRgba;
   /// 1: a 1D texture (GL 1.1 section 3.8.1): only s is used, each level is one row and
-  /// wrap_t is ignored. 2: a 2D texture.
+  /// wrap_t is ignored. 2: a 2D texture. 3: a 3D texture (GL 1.2): s, t and r.
   int dimensions = 2;
   TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
+  /// GL_TEXTURE_WRAP_R (GL 1.2): sampled by 3D textures only.
+  TextureWrap wrap_r = TextureWrap::kRepeat;
   TextureFilter min_filter = TextureFilter::kNearestMipmapLinear;  ///< GL's default
   TextureFilter mag_filter = TextureFilter::kLinear;
-  /// GL_TEXTURE_BORDER_COLOR, in [0, 1]: what GL_CLAMP's linear filter blends in beyond the
-  /// edge (border texels themselves are not kept, as in Mesa's gallium drivers).
+  /// GL_TEXTURE_BORDER_COLOR, in [0, 1]: what GL_CLAMP's linear filter and GL_CLAMP_TO_BORDER
+  /// take beyond the edge (border texels themselves are not kept, as in Mesa's gallium drivers).
   glm::vec4 border_color{0.0f};
+  /// GL_TEXTURE_BASE_LEVEL and GL_TEXTURE_MAX_LEVEL (GL 1.2, section 3.8.8 of GL 1.4): the
+  /// levels sampled are base_level to last_level(); the level of detail is measured in
+  /// base_level's texels. Levels below base_level need not exist.
+  int base_level = 0, max_level = 1000;
+  /// GL_TEXTURE_MIN_LOD / GL_TEXTURE_MAX_LOD (GL 1.2) and the object's GL_TEXTURE_LOD_BIAS
+  /// (GL 1.4); the texture unit's bias is added when sampling (texture_lod).
+  float min_lod = -1000.0f, max_lod = 1000.0f, lod_bias = 0.0f;
 
-  /// Complete when level 0 exists and, if the min filter uses mipmaps, every level down to
-  /// 1x1 is present with halved sizes (GL 1.1 section 3.8.9). Incomplete textures are ignored.
+  /// Complete (GL 1.5 section 3.8.10) when level base_level exists and, if the min filter
+  /// uses mipmaps, base_level <= max_level and every level from base_level to last_level()
+  /// is present with halved sizes (depth too). Incomplete textures are ignored.
   bool complete() const;
-  /// The last level the mipmap filters use: log2 of level 0's larger side (GL 1.1 section
-  /// 3.8.7), or fewer when fewer levels are present.
+  /// The last level the mipmap filters use: q = min(base_level + log2 of the base level's
+  /// largest side, max_level) (GL 1.5 section 3.8.10), or fewer when fewer levels are present.
   int last_level() const;
 };
 
-/// Builds every mipmap level below level 0 by 2x2 box filtering.
+/// The border colour as a texel of the texture's base format (GL 1.5 section 3.8.8: converted
+/// as table 3.15 converts a colour, then expanded as the levels are: luminance and intensity
+/// take red, alpha is 1 where the format has none), in [0, 1]. What Mesa's state tracker
+/// hands llvmpipe (st_translate_color).
+glm::vec4 border_texel(const Texture& texture);
+
+/// GL_MAX_TEXTURE_LOD_BIAS: llvmpipe's (PIPE_CAPF_MAX_TEXTURE_LOD_BIAS).
+inline constexpr float kMaxTextureLodBias = 16.0f;
+
+/// The level-of-detail adjustments of a texture sampled through a texture unit (GL 1.4
+/// section 3.8.8): lambda' = lambda + bias, then clamped to [min_lod, max_lod], as llvmpipe
+/// applies them (lp_build_lod_selector): `adjusted` when a bias or a clamp can matter (its
+/// general path), else the level is chosen straight from rho^2 as before GL 1.2.
+struct TextureLod {
+  bool adjusted = false;
+  float bias = 0.0f;  ///< the texture's and the unit's, each quantized to 1/256 as Mesa does
+  bool apply_min = false, apply_max = false;
+  float min_lod = 0.0f, max_lod = 0.0f;  ///< min_lod at least 0, as Mesa's sampler state
+};
+
+/// The adjustments of `texture` sampled with the texture unit's GL_TEXTURE_LOD_BIAS
+/// `unit_bias` (glTexEnv GL_TEXTURE_FILTER_CONTROL): Mesa quantizes each bias to 1/256 within
+/// [-16, 16]; their sum is clamped to GL_MAX_TEXTURE_LOD_BIAS (the specification).
+TextureLod texture_lod(const Texture& texture, float unit_bias);
+
+/// lambda of an adjusted level of detail (TextureLod::adjusted): 0.5 fast_log2(rho2) plus the
+/// bias, clamped to max_lod then to min_lod, then kept within [-128, 64] (no level lies
+/// beyond; the sign, magnification or not, is kept).
+float adjusted_lod(float rho2, const TextureLod& lod);
+
+/// Builds every mipmap level below level 0 by 2x2 box filtering (scene textures).
 void generate_mipmaps(Texture& texture);
 
-/// The differences of a 2x2 pixel quad's texture coordinates (s and t after the division by
-/// q), from its top-left pixel to the pixel beside it (x) and to the one below it (y), as
-/// llvmpipe derives them for every pixel of the quad (lp_build_packed_ddx_ddy_twocoord).
+/// The differences of a 2x2 pixel quad's texture coordinates (s, t and r after the division
+/// by q), from its top-left pixel to the pixel beside it (x) and to the one below it (y), as
+/// llvmpipe derives them for every pixel of the quad (lp_build_packed_ddx_ddy_twocoord; r's
+/// only matter to 3D textures).
 struct TextureDerivatives {
   float ds_dx = 0.0f, dt_dx = 0.0f, ds_dy = 0.0f, dt_dy = 0.0f;
+  float dr_dx = 0.0f, dr_dy = 0.0f;
 };
 
 /// The squared scale factor rho^2 of GL 1.1 section 3.8.5 as llvmpipe computes it (exactly,
-/// in float): the larger of the squared lengths of the x and y differences measured in level
-/// 0's texels. A texture is minified where rho^2 > 1.
+/// in float): the larger of the squared lengths of the x and y differences measured in the
+/// base level's texels ((s^2 + t^2) + r^2 for a 3D texture). A texture is minified where
+/// rho^2 > 1 (without LOD adjustments).
 float texture_rho2(const Texture& texture, const TextureDerivatives& d);
 
-/// The filtered texel colour at (s, t) for a quad whose scale factor is sqrt(rho2): level
-/// selection as llvmpipe's (log2 computed as lp_build_fast_log2 for *_MIPMAP_LINEAR, rounded
-/// exactly for *_MIPMAP_NEAREST; magnification wherever rho2 <= 1, that is c = 0 for every
-/// filter pair). `st` must be finite (see finite_texcoord).
-glm::vec4 sample_texture(const Texture& texture, glm::vec2 st, float rho2);
+/// The filtered texel colour at (s, t, r) (r for 3D textures only) for a quad whose scale factor is sqrt(rho2), sampled
+/// through a texture unit whose GL_TEXTURE_LOD_BIAS is `unit_bias`: level selection as
+/// llvmpipe's (without adjustments, log2 computed as lp_build_fast_log2 for *_MIPMAP_LINEAR,
+/// rounded exactly for *_MIPMAP_NEAREST, magnification wherever rho2 <= 1, that is c = 0 for
+/// every filter pair; with them, lambda from adjusted_lod, rounded half to even for
+/// *_MIPMAP_NEAREST, magnification where lambda <= 0). `str` must be finite (finite_texcoord).
+glm::vec4 sample_texture(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
 /// sample_texture's texel in byte units (0 to 255), before its one scaling by 1/255: texels
 /// are read as their bytes, filtered by linear interpolations a + w (b - a) (along s, then
-/// t, then between two levels), the border colour taken times 255.
-glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec2 st, float rho2);
+/// t, then r, then between two levels), the border colour taken times 255.
+glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
 
 /// A texture coordinate the samplers can index with: NaN becomes 0 and magnitudes are kept
 /// below 2^20, so that texel indices never overflow (such coordinates only repeat or clamp).

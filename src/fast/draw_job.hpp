@@ -74,7 +74,8 @@ struct VaryingLayout {
 /// or logic op): the depth test kLess or kLequal writing
 /// depth, every colour channel written, flat or Gouraud colours, and the colour either
 /// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
-/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA).
+/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with GL_FUNC_ADD,
+/// BlendState::source_over).
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
 
 /// How a textured draw samples, decided once per draw (plan.cpp) for the SIMD samplers
@@ -82,6 +83,7 @@ enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kB
 struct TexturePlan {
   const Texture* texture = nullptr;  ///< complete; null: the draw is not textured
   bool one_d = false;
+  bool three_d = false;  ///< r sampled too (texcoord planes project it)
   /// A level of detail per quad is needed: mipmaps, or minification and magnification
   /// filtering differently. Otherwise level 0 with the one filter.
   bool lod = false;
@@ -89,9 +91,11 @@ struct TexturePlan {
   bool linear_mip = false;  ///< *_MIPMAP_LINEAR: two levels blended
   bool mag_linear = false;  ///< GL_LINEAR magnification
   bool min_linear = false;  ///< linear within a level when minified (GL_LINEAR, GL_LINEAR_MIPMAP_*)
-  TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
-  float width = 0.0f, height = 0.0f;  ///< level 0's
+  TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat, wrap_r = TextureWrap::kRepeat;
+  float width = 0.0f, height = 0.0f, depth = 0.0f;  ///< the base level's
+  int base_level = 0;                 ///< Texture::base_level
   int last_level = 0;                 ///< Texture::last_level
+  TextureLod adjust;                  ///< texture_lod: bias and clamps
   float border[4] = {};               ///< the border colour in byte units
   TextureEnvMode env = TextureEnvMode::kModulate;
   TextureFormat format = TextureFormat::kRgba;
@@ -117,6 +121,7 @@ struct DrawPlan {
   /// alpha test's alpha, or every channel for the logic op.
   bool exact_colors = false;
   float alpha_ref = 0.0f;        ///< the reference as an 8-bit value (detail::alpha_test)
+  float blend_constant[4] = {};  ///< glBlendColor's, in 8 bits (detail::blend_constant)
   /// Lanes of each block masked by the scissor box and the polygon stipple (raster-inl.h, kept_lanes).
   bool lane_masks = false;
   /// The pixels a draw may write: the framebuffer, cut by the scissor box (inclusive bounds;

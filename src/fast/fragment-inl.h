@@ -279,8 +279,9 @@ HWY_INLINE MB depth_compare(CompareFunc func, VB z, VB stored) {
 
 HWY_INLINE VB one_minus(VB v) { return hn::Sub(hn::Set(DB(), 1.0f), v); }
 
-/// fragment_ops.cpp's blend_factor for channel c.
-HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& dst) {
+/// fragment_ops.cpp's blend_factor for channel c; `constant` is the blend colour as the
+/// reference's blend_constant gives it (DrawPlan::blend_constant).
+HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& dst, const float* constant) {
   const DB db;
   switch (f) {
     case BlendFactor::kZero: return hn::Zero(db);
@@ -298,6 +299,10 @@ HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& ds
       VB b = one_minus(dst.c[3]);  // std::min(a, b) = (b < a) ? b : a
       return hn::IfThenElse(hn::Lt(b, src.c[3]), b, src.c[3]);
     }
+    case BlendFactor::kConstantColor: return hn::Set(db, constant[c]);
+    case BlendFactor::kOneMinusConstantColor: return one_minus(hn::Set(db, constant[c]));
+    case BlendFactor::kConstantAlpha: return hn::Set(db, constant[3]);
+    case BlendFactor::kOneMinusConstantAlpha: return one_minus(hn::Set(db, constant[3]));
   }
   return hn::Set(db, 1.0f);
 }
@@ -374,6 +379,29 @@ HWY_INLINE Rgba blend_src_alpha(const Rgba& src, const Rgba& dst) {
   return out;
 }
 
+/// fragment_ops.cpp's blend, then clamped: any equation and factors (GL 1.4 section 4.1.7),
+/// alpha with its own factors. kMin and kMax read no factor.
+HWY_INLINE Rgba blend_colors(const BlendState& b, const float* constant, const Rgba& src, const Rgba& dst) {
+  Rgba out;
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) {
+    VB v;
+    if (b.equation == BlendEquation::kMin) {
+      v = hn::Min(src.c[c], dst.c[c]);
+    } else if (b.equation == BlendEquation::kMax) {
+      v = hn::Max(src.c[c], dst.c[c]);
+    } else {
+      const VB s = hn::Mul(src.c[c], blend_factor(c == 3 ? b.src_alpha : b.src, c, src, dst, constant));
+      const VB d = hn::Mul(dst.c[c], blend_factor(c == 3 ? b.dst_alpha : b.dst, c, src, dst, constant));
+      v = b.equation == BlendEquation::kAdd ? hn::Add(s, d) : b.equation == BlendEquation::kSubtract ? hn::Sub(s, d)
+                                                                                                  : hn::Sub(d, s);
+    }
+    out.c[c] = clamp_unit(v);
+  }
+  out.clamped = true;
+  return out;
+}
+
 /// RGBA8 words of colours in [0, 1].
 HWY_INLINE hn::Vec<DUB> pack_unorm8(const Rgba& out) {
   return hn::Or(hn::Or(to_unorm8(out.c[0]), hn::ShiftLeft<8>(to_unorm8(out.c[1]))),
@@ -432,9 +460,9 @@ HWY_INLINE std::uint32_t mask_word(const FragmentState& fs) {
 }
 
 /// fragment_ops.cpp's write_color for the lanes of a block set in `live`, at `rows`.
-HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigned live,
-                             std::uint32_t* const rows[kRows]) {
+HWY_INLINE void write_colors(const DrawJob& job, const Rgba& color, unsigned live, std::uint32_t* const rows[kRows]) {
   const DUB dub;
+  const FragmentState& fs = *job.frag;
   Rgba out = clamped(color);
   if (fs.logic_op.enabled) {  // instead of blending, on the 8-bit values
     const hn::Vec<DUB> old = load_rows(DU(), rows);
@@ -447,15 +475,7 @@ HWY_INLINE void write_colors(const FragmentState& fs, const Rgba& color, unsigne
   if (fs.blend.enabled) {
     const Rgba src = out;
     const Rgba dst = unit_colors(old);
-    if (fs.blend.src == BlendFactor::kSrcAlpha && fs.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
-      out = blend_src_alpha(src, dst);
-    } else {
-      #pragma GCC unroll 4
-      for (int c = 0; c < 4; ++c) {
-        out.c[c] = clamp_unit(hn::Add(hn::Mul(src.c[c], blend_factor(fs.blend.src, c, src, dst)),
-                                      hn::Mul(dst.c[c], blend_factor(fs.blend.dst, c, src, dst))));
-      }
-    }
+    out = fs.blend.source_over() ? blend_src_alpha(src, dst) : blend_colors(fs.blend, job.plan.blend_constant, src, dst);
   }
   hn::Vec<DUB> packed;
   if (!masked) {

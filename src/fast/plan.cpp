@@ -48,7 +48,7 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
     return BlockKernel::kGeneral;
   }
   if (!f.blend.enabled) return less ? BlockKernel::kOpaqueLess : BlockKernel::kOpaqueLequal;
-  if (f.blend.src == BlendFactor::kSrcAlpha && f.blend.dst == BlendFactor::kOneMinusSrcAlpha) {
+  if (f.blend.source_over()) {
     return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
   }
   return BlockKernel::kGeneral;
@@ -62,16 +62,21 @@ TexturePlan texture_plan(const ShadeState& shade) {
   if (!t) return tp;
   tp.texture = t;
   tp.one_d = t->dimensions == 1;
+  tp.three_d = t->dimensions == 3;
   tp.mipmaps = uses_mipmaps(t->min_filter);
   tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.mag_linear = t->mag_filter == TextureFilter::kLinear;
   tp.min_linear = t->min_filter == TextureFilter::kLinear || t->min_filter == TextureFilter::kLinearMipmapNearest ||
                   t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.lod = tp.mipmaps || tp.min_linear != tp.mag_linear;
-  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t;
-  tp.width = float(t->levels[0].width), tp.height = float(t->levels[0].height);
+  tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t, tp.wrap_r = t->wrap_r;
+  const TextureLevel& base = t->levels[std::size_t(t->base_level)];
+  tp.width = float(base.width), tp.height = float(base.height), tp.depth = float(base.depth);
+  tp.base_level = t->base_level;
   tp.last_level = t->last_level();
-  for (int c = 0; c < 4; ++c) tp.border[c] = t->border_color[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
+  tp.adjust = texture_lod(*t, shade.texture_lod_bias);
+  const glm::vec4 border = border_texel(*t);
+  for (int c = 0; c < 4; ++c) tp.border[c] = border[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
   tp.env = shade.texture_env;
   tp.format = t->format;
   return tp;
@@ -131,6 +136,8 @@ void make_plan(DrawJob& job) {
   p.alpha_test = frag.alpha_test.enabled;
   p.alpha_ref = float(detail::unorm8(frag.alpha_test.ref));
   p.exact_colors = p.alpha_test || frag.logic_op.enabled;
+  const glm::vec4 constant = detail::blend_constant(frag.blend);
+  for (int c = 0; c < 4; ++c) p.blend_constant[c] = constant[c];
   pixel_box(*job.fb, frag, p);
   const VertexInput& in = *job.in;
   const bool unfilled = detail::PrimAssembler::unfilled(frag);

@@ -64,7 +64,7 @@ class ChunkSink final : public detail::PieceSink {
 // Vertex i as the reference's vertex stage makes it: clip coordinates, window position and
 // the attributes the draw carries.
 PrimVertex prim_vertex(const DrawJob& job, const PrimAssembler& assembler, std::uint32_t i) {
-  PrimVertex v = assembler.make_vertex(job.projection * job.in->positions[i]);
+  PrimVertex v = assembler.make_vertex(job.projection * job.in->positions[i], job.in->positions[i].z);
   const VaryingLayout& l = job.plan.layout;
   expand_varyings(l, &job.varyings[std::size_t(i) * std::size_t(l.count)], v.attr);
   return v;

@@ -234,6 +234,8 @@ HWY_INLINE hn::Vec<DUB> stencil_op(StencilOp op, hn::Vec<DUB> v, hn::Vec<DUB> re
     case StencilOp::kIncr: return hn::Min(hn::Add(v, one), hn::Set(du, 0xffu));  // clamped (GL 1.1)
     case StencilOp::kDecr: return hn::Sub(hn::Max(v, one), one);
     case StencilOp::kInvert: return hn::Xor(v, hn::Set(du, 0xffu));
+    case StencilOp::kIncrWrap: return hn::And(hn::Add(v, one), hn::Set(du, 0xffu));  // modulo 256 (GL 1.4)
+    case StencilOp::kDecrWrap: return hn::And(hn::Sub(v, one), hn::Set(du, 0xffu));
   }
   return v;
 }
@@ -305,7 +307,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
     }
     counts.fragments += unsigned(std::popcount(bits));
     counts.shaded += unsigned(std::popcount(passed));
-    if (passed && job.plan.writes_color) write_colors(fs, color, passed, g.color);
+    if (passed && job.plan.writes_color) write_colors(job, color, passed, g.color);
     if constexpr (kPath == Path::kEdge) close_block(job, g);
     return;
   }
@@ -324,7 +326,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
   counts.shaded += unsigned(std::popcount(passed));
   if (passed && job.plan.writes_color) {
     if (!job.plan.alpha_test) color = block_color(job, t, planes, b0, b1, f0, f1, coverage, BlockPlace{x, y, e, passed});
-    write_colors(fs, color, passed, g.color);
+    write_colors(job, color, passed, g.color);
   }
   if constexpr (kPath == Path::kEdge) close_block(job, g);
 }
@@ -377,7 +379,7 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
   store_rows(df, z, passed, depth);
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
-  if (planes.exact || planes.has_secondary) return write_colors(*job.frag, vertex_color(t, planes, w), passed, color);
+  if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);
   if constexpr (kBlend) {
     const Rgba src = clamped(vertex_color(t, planes, w));
     store_rows(DU(), pack_unorm8(blend_src_alpha(src, unit_colors(load_rows(DU(), color)))), passed, color);

@@ -22,19 +22,21 @@ HWY_BEFORE_NAMESPACE();
 namespace shadelab::fast::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-/// A triangle's texture coordinates s, t and q (r is not sampled): value at vertex 2 and the
-/// differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane). `unit_q`: q is 1
-/// at every vertex, so its plane is 1 wherever the weights are finite.
+/// A triangle's texture coordinates s, t, q and r (r sampled by 3D textures only): value at
+/// vertex 2 and the differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane).
+/// `unit_q`: q is 1 at every vertex, so its plane is 1 wherever the weights are finite.
 struct TexcoordPlanes {
-  float base[3], d0[3], d1[3];
+  float base[4], d0[4], d1[4];
   bool unit_q;
+  bool with_r;  // a 3D texture: r is projected too
 };
 
 HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t) {
-  static constexpr int kSlot[3] = {0, 1, 3};  // s, t, q
+  static constexpr int kSlot[4] = {0, 1, 3, 2};  // s, t, q, r
   const int first = job.plan.layout.texcoord;
   TexcoordPlanes p;
-  for (int i = 0; i < 3; ++i) {
+  p.with_r = job.plan.texture.three_d;
+  for (int i = 0; i < 4; ++i) {
     const int k = first + kSlot[i];
     const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
     p.base[i] = a2, p.d0[i] = a0 - a2, p.d1[i] = a1 - a2;
@@ -67,50 +69,61 @@ HWY_INLINE hn::Vec<D> finite_coord(D d, hn::Vec<D> v) {
   return hn::IfThenElse(hn::Gt(v, minus), below, hn::IfThenElseZero(hn::Eq(v, v), minus));
 }
 
-/// (s / q, t / q) at weights p0, p1, made finite (texcoord.hpp's project_texcoord). Where q
-/// is 1 at every vertex its plane is exactly 1 and the quotients the coordinates themselves,
-/// but where a weight is not finite (outside the triangle, past the horizon): NaN there, as
-/// the plane's p * 0 and the quotient give.
+/// (s / q, t / q, r / q) at weights p0, p1, made finite (texcoord.hpp's project_texcoord); r
+/// only for a 3D texture (else left as it is). Where q is 1 at every vertex its plane is
+/// exactly 1 and the quotients the coordinates themselves, but where a weight is not finite
+/// (outside the triangle, past the horizon): NaN there, as the plane's p * 0 and the quotient
+/// give.
 template <class D>
-HWY_INLINE void project(D d, const TexcoordPlanes& tp, hn::Vec<D> p0, hn::Vec<D> p1, hn::Vec<D>& s, hn::Vec<D>& t) {
-  hn::Vec<D> c[3];
-  const int planes = tp.unit_q ? 2 : 3;
-  for (int i = 0; i < planes; ++i) {
-    c[i] = hn::Add(hn::Add(hn::Set(d, tp.base[i]), hn::Mul(p0, hn::Set(d, tp.d0[i]))), hn::Mul(p1, hn::Set(d, tp.d1[i])));
-  }
+HWY_INLINE void project(D d, const TexcoordPlanes& tp, hn::Vec<D> p0, hn::Vec<D> p1, hn::Vec<D>& s, hn::Vec<D>& t,
+                        hn::Vec<D>& r) {
+  hn::Vec<D> c[4];
+  auto plane = [&](int i) {
+    return hn::Add(hn::Add(hn::Set(d, tp.base[i]), hn::Mul(p0, hn::Set(d, tp.d0[i]))), hn::Mul(p1, hn::Set(d, tp.d1[i])));
+  };
+  c[0] = plane(0), c[1] = plane(1);
+  if (tp.with_r) c[3] = plane(3);
   if (tp.unit_q) {
     const auto finite = hn::And(hn::IsFinite(p0), hn::IsFinite(p1));
     const auto nan = hn::Set(d, __builtin_nanf(""));
     s = finite_coord(d, hn::IfThenElse(finite, c[0], nan));
     t = finite_coord(d, hn::IfThenElse(finite, c[1], nan));
+    if (tp.with_r) r = finite_coord(d, hn::IfThenElse(finite, c[3], nan));
     return;
   }
+  c[2] = plane(2);
   s = finite_coord(d, hn::Div(c[0], c[2]));
   t = finite_coord(d, hn::Div(c[1], c[2]));
+  if (tp.with_r) r = finite_coord(d, hn::Div(c[3], c[2]));
 }
 
-/// The level-of-detail differences of each lane's quad (TextureDerivatives).
+/// The level-of-detail differences of each lane's quad (TextureDerivatives; r's for 3D
+/// textures only).
 struct QuadDerivatives {
-  VB ds_dx, dt_dx, ds_dy, dt_dy;
+  VB ds_dx, dt_dx, ds_dy, dt_dy, dr_dx, dr_dy;
 };
 
 /// Where the block's two rows are one of llvmpipe's quads (an even framebuffer height: its
 /// quads are GL rows 2k and 2k + 1, a block's rows): the differences come from the block's own
 /// lanes, the top row (row 1) and its pairs of columns.
-HWY_INLINE QuadDerivatives quad_derivatives_in_block(VB s, VB t) {
+HWY_INLINE QuadDerivatives quad_derivatives_in_block(VB s, VB t, VB r, bool with_r) {
 #if HWY_TARGET == HWY_SCALAR
-  (void)s, (void)t;
+  (void)s, (void)t, (void)r, (void)with_r;
   return {};
 #else
   const DF df;
-  const VF s_top = row_of(df, s, 1), s_bottom = row_of(df, s, 0);
-  const VF t_top = row_of(df, t, 1), t_bottom = row_of(df, t, 0);
-  const VF ds_dx = hn::Sub(hn::DupOdd(s_top), hn::DupEven(s_top));
-  const VF dt_dx = hn::Sub(hn::DupOdd(t_top), hn::DupEven(t_top));
-  const VF ds_dy = hn::Sub(hn::DupEven(s_bottom), hn::DupEven(s_top));
-  const VF dt_dy = hn::Sub(hn::DupEven(t_bottom), hn::DupEven(t_top));
-  return {join_rows(df, ds_dx, ds_dx), join_rows(df, dt_dx, dt_dx), join_rows(df, ds_dy, ds_dy),
-          join_rows(df, dt_dy, dt_dy)};
+  auto across = [&](VB v) {  // the top-right lane less the top-left one
+    const VF top = row_of(df, v, 1);
+    const VF dx = hn::Sub(hn::DupOdd(top), hn::DupEven(top));
+    return join_rows(df, dx, dx);
+  };
+  auto down = [&](VB v) {  // the bottom-left lane less the top-left one
+    const VF dy = hn::Sub(hn::DupEven(row_of(df, v, 0)), hn::DupEven(row_of(df, v, 1)));
+    return join_rows(df, dy, dy);
+  };
+  QuadDerivatives q{across(s), across(t), down(s), down(t), hn::Zero(DB()), hn::Zero(DB())};
+  if (with_r) q.dr_dx = across(r), q.dr_dy = down(r);
+  return q;
 #endif
 }
 
@@ -126,11 +139,11 @@ HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const T
   alignas(64) static constexpr double kOddColumns[8] = {0, -1, 0, -1, 0, -1, 0, -1};
   const VD parity = lanes == 1 ? hn::Set(dd, -double(x & 1)) : hn::Load(dd, kOddColumns);
   const VD inv_area = hn::Set(dd, t.inv_area);
-  VF out[4][kRows];
+  VF out[6][kRows];
   #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     const int row = y + r, top = height - 1 - ((height - 1 - row) & ~1);
-    VF s[3], tt[3];  // the quad's top-left, top-right and bottom-left corners
+    VF s[3], tt[3], rr[3];  // the quad's top-left, top-right and bottom-left corners
     for (int corner = 0; corner < 3; ++corner) {
       const VD dcol = hn::Add(parity, hn::Set(dd, corner == 1 ? 1.0 : 0.0));
       const double drow = double(top - row - (corner == 2 ? 1 : 0));
@@ -143,18 +156,22 @@ HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const T
       }
       VF p0, p1;
       float_weights(df, t, f[0], f[1], p0, p1);
-      project(df, tp, p0, p1, s[corner], tt[corner]);
+      rr[corner] = hn::Zero(df);
+      project(df, tp, p0, p1, s[corner], tt[corner], rr[corner]);
     }
     out[0][r] = hn::Sub(s[1], s[0]);
     out[1][r] = hn::Sub(tt[1], tt[0]);
     out[2][r] = hn::Sub(s[2], s[0]);
     out[3][r] = hn::Sub(tt[2], tt[0]);
+    out[4][r] = hn::Sub(rr[1], rr[0]);
+    out[5][r] = hn::Sub(rr[2], rr[0]);
   }
   return {join_rows(df, out[0][0], out[0][kRows - 1]), join_rows(df, out[1][0], out[1][kRows - 1]),
-          join_rows(df, out[2][0], out[2][kRows - 1]), join_rows(df, out[3][0], out[3][kRows - 1])};
+          join_rows(df, out[2][0], out[2][kRows - 1]), join_rows(df, out[3][0], out[3][kRows - 1]),
+          join_rows(df, out[4][0], out[4][kRows - 1]), join_rows(df, out[5][0], out[5][kRows - 1])};
 }
 
-/// texture_rho2: the larger squared length of the x and y differences in level 0's texels.
+/// texture_rho2: the larger squared length of the x and y differences in the base level's texels.
 HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
   const DB db;
   const VB w = hn::Set(db, tp.width), h = hn::Set(db, tp.height);
@@ -164,7 +181,12 @@ HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
     return hn::IfThenElse(hn::Lt(a, b), b, a);
   }
   const VB tx = hn::Mul(d.dt_dx, h), ty = hn::Mul(d.dt_dy, h);
-  const VB a = hn::Add(hn::Mul(sx, sx), hn::Mul(tx, tx)), b = hn::Add(hn::Mul(sy, sy), hn::Mul(ty, ty));
+  VB a = hn::Add(hn::Mul(sx, sx), hn::Mul(tx, tx)), b = hn::Add(hn::Mul(sy, sy), hn::Mul(ty, ty));
+  if (tp.three_d) {  // the r terms added last, as lp_build_rho
+    const VB depth = hn::Set(db, tp.depth), rx = hn::Mul(d.dr_dx, depth), ry = hn::Mul(d.dr_dy, depth);
+    a = hn::Add(a, hn::Mul(rx, rx));
+    b = hn::Add(b, hn::Mul(ry, ry));
+  }
   return hn::IfThenElse(hn::Lt(a, b), b, a);
 }
 
@@ -199,31 +221,54 @@ HWY_INLINE LevelChoice choose_levels(const TexturePlan& tp, const QuadDerivative
   const DIB di;
   const VB r2 = rho2(tp, d);
   LevelChoice c;
-  c.lo = c.hi = hn::Zero(di);
+  c.lo = c.hi = hn::Set(di, tp.base_level);
   c.frac = hn::Zero(db);
   c.two_levels = false;
   VB lod = hn::Zero(db);
-  if (tp.linear_mip) lod = hn::Mul(hn::Set(db, 0.5f), fast_log2(r2));
-  const MB minified = tp.linear_mip ? hn::Gt(lod, hn::Zero(db)) : hn::Gt(r2, hn::Set(db, 1.0f));
+  MB minified;
+  if (tp.adjust.adjusted) {  // texture.cpp's adjusted_lod
+    lod = hn::Add(hn::Mul(hn::Set(db, 0.5f), fast_log2(r2)), hn::Set(db, tp.adjust.bias));
+    if (tp.adjust.apply_max) lod = hn::Min(lod, hn::Set(db, tp.adjust.max_lod));
+    if (tp.adjust.apply_min) lod = hn::Max(lod, hn::Set(db, tp.adjust.min_lod));
+    lod = hn::Min(hn::Max(lod, hn::Set(db, -128.0f)), hn::Set(db, 64.0f));
+    minified = hn::Gt(lod, hn::Zero(db));
+  } else {
+    if (tp.linear_mip) lod = hn::Mul(hn::Set(db, 0.5f), fast_log2(r2));
+    minified = tp.linear_mip ? hn::Gt(lod, hn::Zero(db)) : hn::Gt(r2, hn::Set(db, 1.0f));
+  }
   c.linear = tp.min_linear == tp.mag_linear ? filter_mask(tp.mag_linear)
                                             : (tp.min_linear ? minified : hn::Not(minified));
   if (!tp.mipmaps) return c;
-  const auto last = hn::Set(di, tp.last_level);
+  const auto base = hn::Set(di, tp.base_level), last = hn::Set(di, tp.last_level);
   const auto minified_i = hn::RebindMask(di, minified);
-  if (!tp.linear_mip) {  // rounded_half_log2: the frexp exponent (biased exponent - 126), halved
-    const auto exponent = hn::And(hn::ShiftRight<23>(hn::BitCast(di, r2)), hn::Set(di, 0xff));
-    const auto half = hn::ShiftRight<1>(hn::Sub(exponent, hn::Set(di, 126)));
-    c.lo = c.hi = hn::IfThenElseZero(minified_i, hn::Min(hn::Max(half, hn::Zero(di)), last));
+  if (!tp.linear_mip) {
+    hn::Vec<DIB> i;
+    if (tp.adjust.adjusted) {  // lp_build_iround: half to even
+      i = hn::NearestInt(lod);
+    } else {  // rounded_half_log2: the frexp exponent (biased exponent - 126), halved
+      const auto exponent = hn::And(hn::ShiftRight<23>(hn::BitCast(di, r2)), hn::Set(di, 0xff));
+      i = hn::ShiftRight<1>(hn::Sub(exponent, hn::Set(di, 126)));
+    }
+    const auto level = hn::Min(hn::Max(hn::Add(base, i), base), last);
+    c.lo = c.hi = hn::IfThenElse(minified_i, level, base);
     return c;
   }
   const VB floor = hn::Floor(lod);
-  const auto level = hn::ConvertTo(di, floor);
+  const auto level = hn::Add(base, hn::ConvertTo(di, floor));
   const auto below_last = hn::And(minified_i, hn::Lt(level, last));
-  c.lo = hn::IfThenElse(below_last, level, hn::IfThenElseZero(minified_i, last));
+  c.lo = hn::IfThenElse(below_last, level, hn::IfThenElse(minified_i, last, base));
   c.hi = hn::IfThenElse(below_last, hn::Add(level, hn::Set(di, 1)), c.lo);
   c.frac = hn::IfThenElseZero(hn::RebindMask(db, below_last), hn::Sub(lod, floor));
   c.two_levels = !hn::AllFalse(di, below_last);
   return c;
+}
+
+/// texture.cpp's mirror: |2 (s/2 - round(s/2))|, rounded half to even.
+HWY_INLINE VB mirror(VB s) {
+  const DB db;
+  const VB h = hn::Mul(s, hn::Set(db, 0.5f));
+  const VB f = hn::Sub(h, hn::Round(h));
+  return hn::Abs(hn::Add(f, f));
 }
 
 /// wrap_coord, times the level's size: where in the level, in texels, a coordinate falls.
@@ -237,12 +282,15 @@ HWY_INLINE VB texel_coord(VB s, int size, TextureWrap wrap) {
       s = hn::Min(hn::Max(s, hn::Set(db, half)), hn::Set(db, 1.0f - half));
       break;
     }
+    case TextureWrap::kClampToBorder: s = hn::Min(hn::Max(s, hn::Set(db, -1.0f)), hn::Set(db, 2.0f)); break;
+    case TextureWrap::kMirroredRepeat: s = mirror(s); break;
   }
   return hn::Mul(s, hn::Set(db, float(size)));
 }
 
-/// wrap_index for indices in [-1, size]: repeat wraps them, clamp-to-edge clamps them, and
-/// GL_CLAMP keeps them, marking those outside [0, size) in `border` (the border colour).
+/// wrap_index for indices in [-1, size] (clamp to border: [-size - 1, 2 size]): repeat wraps
+/// them, clamp-to-edge and mirrored repeat clamp them, and GL_CLAMP and clamp to border keep
+/// them, marking those outside [0, size) in `border` (the border colour).
 HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, hn::Mask<DIB>& border) {
   const DIB di;
   const auto n = hn::Set(di, size);
@@ -250,19 +298,27 @@ HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, h
     case TextureWrap::kRepeat:
       i = hn::IfThenElse(hn::Lt(i, hn::Zero(di)), hn::Add(i, n), i);
       return hn::IfThenElse(hn::Lt(i, n), i, hn::Sub(i, n));
-    case TextureWrap::kClampToEdge: return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, hn::Set(di, 1)));
-    case TextureWrap::kClamp: border = hn::Or(border, hn::Or(hn::Lt(i, hn::Zero(di)), hn::Not(hn::Lt(i, n))));
+    case TextureWrap::kClampToEdge: case TextureWrap::kMirroredRepeat:
+      return hn::Min(hn::Max(i, hn::Zero(di)), hn::Sub(n, hn::Set(di, 1)));
+    case TextureWrap::kClamp: case TextureWrap::kClampToBorder:
+      border = hn::Or(border, hn::Or(hn::Lt(i, hn::Zero(di)), hn::Not(hn::Lt(i, n))));
   }
   return i;
 }
 
-/// Texels (i, j) of a level in byte units (texture.cpp's texel), gathered from its RGBA8 words.
-HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, VB out[4]) {
+/// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
+/// words; j is ignored by 1D textures, k by 1D and 2D ones.
+HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, hn::Vec<DIB> k,
+                      VB out[4]) {
   const DIB di;
   const DUB du;
   hn::Mask<DIB> border = hn::FirstN(di, 0);
   i = wrap_index(i, l.width, tp.wrap_s, border);
   if (!tp.one_d) j = wrap_index(j, l.height, tp.wrap_t, border);
+  if (tp.three_d) {
+    k = wrap_index(k, l.depth, tp.wrap_r, border);
+    j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
+  }
   const auto index = hn::IfThenZeroElse(border, hn::Add(hn::Mul(j, hn::Set(di, l.width)), i));
   const auto words = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
   const bool any_border = !hn::AllFalse(di, border);
@@ -276,24 +332,35 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 /// a + w (b - a), the reference's lerp.
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
+/// texture.cpp's nearest_index: the clamps and mirrored repeat (u >= 0 there) keep a nearest
+/// index in the level; repeat wraps it and clamp to border takes the border outside.
+HWY_INLINE bool keeps_nearest_in_level(TextureWrap w) {
+  return w != TextureWrap::kRepeat && w != TextureWrap::kClampToBorder;
+}
+
 /// One level's filtered texels in byte units (texture.cpp's sample_level): `linear` lanes
-/// blend four texels (two for 1D textures), the others take the nearest; the nearest never
-/// reads the border.
-HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, MB linear, VB out[4]) {
+/// blend four texels (two for 1D textures), the others take the nearest; the nearest reads
+/// the border only with clamp to border.
+HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r, MB linear, VB out[4]) {
   const DB db;
   const DIB di;
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
   const VB u = texel_coord(s, l.width, tp.wrap_s);
   const VB v = tp.one_d ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
+  const VB w = tp.three_d ? texel_coord(r, l.depth, tp.wrap_r) : hn::Zero(db);
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  hn::Vec<DIB> i, j;
+  hn::Vec<DIB> i, j, k = hn::Zero(di);
   if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
     i = hn::ConvertTo(di, hn::Floor(u));
     j = tp.one_d ? hn::Zero(di) : hn::ConvertTo(di, hn::Floor(v));
-    if (tp.wrap_s != TextureWrap::kRepeat) i = hn::Min(i, hn::Set(di, l.width - 1));
-    if (tp.wrap_t != TextureWrap::kRepeat) j = hn::Min(j, hn::Set(di, l.height - 1));
+    if (keeps_nearest_in_level(tp.wrap_s)) i = hn::Min(i, hn::Set(di, l.width - 1));
+    if (keeps_nearest_in_level(tp.wrap_t)) j = hn::Min(j, hn::Set(di, l.height - 1));
+    if (tp.three_d) {
+      k = hn::ConvertTo(di, hn::Floor(w));
+      if (keeps_nearest_in_level(tp.wrap_r)) k = hn::Min(k, hn::Set(di, l.depth - 1));
+    }
   }
-  if (!any_linear) return fetch(tp, l, i, j, out);
+  if (!any_linear) return fetch(tp, l, i, j, k, out);
   const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
   const VB fu = hn::Floor(uu), fv = hn::Floor(vv);
   const auto li = hn::RebindMask(di, linear);
@@ -302,28 +369,41 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, MB li
   else j = all_linear ? hn::ConvertTo(di, fv) : hn::IfThenElse(li, hn::ConvertTo(di, fv), j);
   const VB a = hn::IfThenElseZero(linear, hn::Sub(uu, fu)), b = hn::IfThenElseZero(linear, hn::Sub(vv, fv));
   const auto one = hn::Set(di, 1);
-  VB c00[4], c10[4];
-  fetch(tp, l, i, j, c00);
-  fetch(tp, l, hn::Add(i, one), j, c10);
   if (tp.one_d) {
+    VB c00[4], c10[4];
+    fetch(tp, l, i, j, k, c00);
+    fetch(tp, l, hn::Add(i, one), j, k, c10);
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
     return;
   }
-  VB c01[4], c11[4];
-  fetch(tp, l, i, hn::Add(j, one), c01);
-  fetch(tp, l, hn::Add(i, one), hn::Add(j, one), c11);
+  auto slice = [&](hn::Vec<DIB> kk, VB res[4]) {  // the reference's bilinear slice
+    VB t00[4], t10[4], t01[4], t11[4];
+    fetch(tp, l, i, j, kk, t00);
+    fetch(tp, l, hn::Add(i, one), j, kk, t10);
+    fetch(tp, l, i, hn::Add(j, one), kk, t01);
+    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), kk, t11);
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) res[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
+  };
+  if (!tp.three_d) return slice(k, out);
+  const VB ww = hn::Sub(w, hn::Set(db, 0.5f)), fw = hn::Floor(ww);
+  k = all_linear ? hn::ConvertTo(di, fw) : hn::IfThenElse(li, hn::ConvertTo(di, fw), k);
+  const VB cw = hn::IfThenElseZero(linear, hn::Sub(ww, fw));
+  VB near[4], far[4];
+  slice(k, near);
+  slice(hn::Add(k, one), far);
   #pragma GCC unroll 4
-  for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(c00[c], c10[c], a), lerp(c01[c], c11[c], a), b);
+  for (int c = 0; c < 4; ++c) out[c] = lerp(near[c], far[c], cw);
 }
 
 /// The filtered texel of every `live` lane in [0, 1] (sample_texture): the levels each lane
 /// needs sampled one level at a time, then blended.
-HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, const QuadDerivatives* d, MB live, VB out[4]) {
+HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const QuadDerivatives* d, MB live, VB out[4]) {
   const DB db;
   const DIB di;
   if (!d) {  // one level, one filter for every lane
-    sample_level(tp, 0, s, t, filter_mask(tp.mag_linear), out);
+    sample_level(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear), out);
   } else {
     const LevelChoice c = choose_levels(tp, *d);
     const auto live_i = hn::RebindMask(di, live);
@@ -334,7 +414,7 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, const QuadDeri
       const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
       if (hn::AllFalse(di, hn::And(live_i, hn::Or(is_lo, is_hi)))) continue;
       VB texel[4];
-      sample_level(tp, level, s, t, c.linear, texel);
+      sample_level(tp, level, s, t, r, c.linear, texel);
       const MB lo_mask = hn::RebindMask(db, is_lo), hi_mask = hn::RebindMask(db, is_hi);
       #pragma GCC unroll 4
       for (int k = 0; k < 4; ++k) {
@@ -401,15 +481,15 @@ HWY_INLINE void texture_block(const DrawJob& job, const TriSetup& t, const Texco
                               int x, int y, const VD e[kRows][3], MB live, VB color[4]) {
   const DB db;
   const TexturePlan& tp = job.plan.texture;
-  VB s, tc;
-  project(db, planes, w.f0, w.f1, s, tc);
+  VB s, tc, r = hn::Zero(db);
+  project(db, planes, w.f0, w.f1, s, tc, r);
   QuadDerivatives d;
   if (tp.lod) {
-    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc)
+    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc, r, tp.three_d)
                                               : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
   VB texel[4];
-  sample_texture(tp, s, tc, tp.lod ? &d : nullptr, live, texel);
+  sample_texture(tp, s, tc, r, tp.lod ? &d : nullptr, live, texel);
   texture_env(tp, color, texel);
 }
 

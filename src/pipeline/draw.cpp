@@ -158,10 +158,12 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
   glm::vec4 color = lit.primary;
   if (shade.texture) {
     const Texture& t = *shade.texture;
-    // GL 1.1 section 3.8: s / q and t / q per fragment (projective texture coordinates).
+    // GL 1.1 section 3.8: s / q, t / q (and r / q) per fragment (projective texture
+    // coordinates).
     const float q = a[kTexCoord + 3];
-    const glm::vec2 st(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q));
-    glm::vec4 texel = sample_texture(t, st, texture_rho2(t, f.texture_derivatives));
+    const glm::vec3 str(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q),
+                        finite_texcoord(a[kTexCoord + 2] / q));
+    glm::vec4 texel = sample_texture(t, str, texture_rho2(t, f.texture_derivatives), shade.texture_lod_bias);
     color = apply_texture_env(shade.texture_env, t.format, color, texel, shade.texture_env_color);
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped

@@ -33,9 +33,11 @@ class ReferenceSink final : public PieceSink {
   const ReferenceDraw& ctx_;
 };
 
-PrimVertex prim_vertex(const PrimAssembler& assembler, const ClipVertex& v) {
-  PrimVertex p = assembler.make_vertex(v.clip);
-  p.attr = v.attr;
+// Vertex i: its clip coordinates and attributes from the vertex stage, its eye-space z.
+PrimVertex prim_vertex(const PrimAssembler& assembler, const VertexInput& in, const std::vector<ClipVertex>& verts,
+                       std::uint32_t i) {
+  PrimVertex p = assembler.make_vertex(verts[i].clip, in.positions[i].z);
+  p.attr = verts[i].attr;
   return p;
 }
 
@@ -56,8 +58,8 @@ void draw_prims_reference(const ReferenceDraw& ctx, const glm::mat4& projection,
       const Triangle& t = in.triangles[i];
       ++ctx.stats->triangles_in;
       if (t[0] >= n || t[1] >= n || t[2] >= n) continue;
-      const PrimVertex v[3] = {prim_vertex(assembler, verts[t[0]]), prim_vertex(assembler, verts[t[1]]),
-                               prim_vertex(assembler, verts[t[2]])};
+      const PrimVertex v[3] = {prim_vertex(assembler, in, verts, t[0]), prim_vertex(assembler, in, verts, t[1]),
+                               prim_vertex(assembler, in, verts, t[2])};
       const std::uint8_t flags = i < in.triangle_flags.size() ? in.triangle_flags[i]
                                                               : std::uint8_t(kTriangleEdges | kTriangleRestartStipple);
       assembler.triangle(v, flags, t[2], sink);
@@ -65,10 +67,11 @@ void draw_prims_reference(const ReferenceDraw& ctx, const glm::mat4& projection,
   }
   for (const LineSegment& l : in.lines) {
     if (l.v[0] >= n || l.v[1] >= n) continue;
-    assembler.line(prim_vertex(assembler, verts[l.v[0]]), prim_vertex(assembler, verts[l.v[1]]), l.flags, l.v[1], sink);
+    assembler.line(prim_vertex(assembler, in, verts, l.v[0]), prim_vertex(assembler, in, verts, l.v[1]), l.flags,
+                   l.v[1], sink);
   }
   for (std::uint32_t i : in.points) {
-    if (i < n) assembler.point(prim_vertex(assembler, verts[i]), i, sink);
+    if (i < n) assembler.point(prim_vertex(assembler, in, verts, i), i, sink);
   }
   if (in.stipple_counter) *in.stipple_counter = assembler.stipple_counter();
 }

@@ -98,6 +98,8 @@ std::uint8_t apply_stencil_op(StencilOp op, std::uint8_t value, std::uint8_t ref
     case StencilOp::kIncr: return value == 0xff ? value : value + 1;  // clamped (GL 1.1)
     case StencilOp::kDecr: return value == 0 ? value : value - 1;
     case StencilOp::kInvert: return static_cast<std::uint8_t>(~value);
+    case StencilOp::kIncrWrap: return static_cast<std::uint8_t>(value + 1);  // modulo 256 (GL 1.4)
+    case StencilOp::kDecrWrap: return static_cast<std::uint8_t>(value - 1);
   }
   return value;
 }
@@ -108,7 +110,10 @@ void update_stencil(Framebuffer& fb, std::size_t i, StencilOp op, const StencilS
   fb.stencil[i] = static_cast<std::uint8_t>((old & ~s.write_mask) | (next & s.write_mask));
 }
 
-float blend_factor(BlendFactor f, int channel, const glm::vec4& src, const glm::vec4& dst) {
+// Factor `f` for channel `channel` (3: alpha); `constant` is the blend colour in the colour
+// buffer's precision (blend_constant).
+float blend_factor(BlendFactor f, int channel, const glm::vec4& src, const glm::vec4& dst,
+                   const glm::vec4& constant) {
   switch (f) {
     case BlendFactor::kZero: return 0.0f;
     case BlendFactor::kOne: return 1.0f;
@@ -121,6 +126,10 @@ float blend_factor(BlendFactor f, int channel, const glm::vec4& src, const glm::
     case BlendFactor::kDstAlpha: return dst.a;
     case BlendFactor::kOneMinusDstAlpha: return 1.0f - dst.a;
     case BlendFactor::kSrcAlphaSaturate: return channel == 3 ? 1.0f : std::min(src.a, 1.0f - dst.a);
+    case BlendFactor::kConstantColor: return constant[channel];
+    case BlendFactor::kOneMinusConstantColor: return 1.0f - constant[channel];
+    case BlendFactor::kConstantAlpha: return constant.a;
+    case BlendFactor::kOneMinusConstantAlpha: return 1.0f - constant.a;
   }
   return 1.0f;
 }
@@ -149,6 +158,30 @@ namespace {
 float unit(float x) { return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f; }
 }  // namespace
 
+glm::vec4 blend_constant(const BlendState& b) {
+  glm::vec4 k;
+  for (int c = 0; c < 4; ++c) k[c] = float(unorm8(b.color[c])) / 255.0f;
+  return k;
+}
+
+glm::vec4 blend(const BlendState& b, const glm::vec4& constant, const glm::vec4& src, const glm::vec4& dst) {
+  glm::vec4 out;
+  for (int c = 0; c < 4; ++c) {
+    if (b.equation == BlendEquation::kMin) {
+      out[c] = std::min(src[c], dst[c]);
+      continue;
+    }
+    if (b.equation == BlendEquation::kMax) {
+      out[c] = std::max(src[c], dst[c]);
+      continue;
+    }
+    const float s = src[c] * blend_factor(c == 3 ? b.src_alpha : b.src, c, src, dst, constant);
+    const float d = dst[c] * blend_factor(c == 3 ? b.dst_alpha : b.dst, c, src, dst, constant);
+    out[c] = b.equation == BlendEquation::kAdd ? s + d : b.equation == BlendEquation::kSubtract ? s - d : d - s;
+  }
+  return out;
+}
+
 void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentState& state) {
   for (int c = 0; c < 4; ++c) src[c] = unit(src[c]);
   std::uint8_t* px = &fb.color[i * 4];
@@ -167,10 +200,7 @@ void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentSt
   glm::vec4 out = src;
   if (state.blend.enabled) {
     glm::vec4 dst(px[0] / 255.0f, px[1] / 255.0f, px[2] / 255.0f, px[3] / 255.0f);
-    for (int c = 0; c < 4; ++c) {
-      out[c] = src[c] * blend_factor(state.blend.src, c, src, dst) +
-               dst[c] * blend_factor(state.blend.dst, c, src, dst);
-    }
+    out = blend(state.blend, blend_constant(state.blend), src, dst);
   }
   for (int c = 0; c < 4; ++c) {
     if (!state.color_mask[c]) continue;

@@ -55,6 +55,15 @@ bool compare_stencil(CompareFunc func, unsigned ref, unsigned stored);
 /// updating stencil and depth as GL specifies. Returns true if the fragment survives.
 bool depth_stencil_test(Framebuffer& fb, std::size_t i, float z, const FragmentState& state);
 
+/// glBlendColor's constant as the colour buffer holds it: each channel rounded to 8 bits (as
+/// llvmpipe stores it for an 8-bit buffer), back in [0, 1].
+glm::vec4 blend_constant(const BlendState& b);
+
+/// The blended colour (GL 1.4 section 4.1.7) of source `src` (clamped to [0, 1]) over
+/// destination `dst` (the pixel's, in [0, 1]), with `constant` from blend_constant: unclamped
+/// (a subtraction may go below 0). Each product and the sum or difference rounded in float.
+glm::vec4 blend(const BlendState& b, const glm::vec4& constant, const glm::vec4& src, const glm::vec4& dst);
+
 /// Blends `src` (unclamped colour, alpha) into pixel `i`, or combines it by the logic op
 /// when that is enabled, and writes it through the colour mask.
 void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentState& state);

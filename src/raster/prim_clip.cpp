@@ -22,6 +22,7 @@ void interpolate(PrimVertex& dst, float t, const PrimVertex& out, const PrimVert
                  int fb_height) {
   for (int i = 0; i < 4; ++i) dst.clip[i] = out.clip[i] + t * (in.clip[i] - out.clip[i]);
   for (int i = 0; i < kAttrCount; ++i) dst.attr[i] = out.attr[i] + t * (in.attr[i] - out.attr[i]);
+  dst.point_size = out.point_size + t * (in.point_size - out.point_size);
   to_down_window(dst, vp, fb_height, false);
 }
 

@@ -23,6 +23,7 @@ struct PrimVertex {
   float inv_w;
   Attribs attr;
   bool edge;  ///< polygons: the edge from this vertex to the next is drawn
+  float point_size;  ///< an attenuated point's derived size (PointState::attenuated), pixels
 };
 
 /// The planes a draw clips against, in clip space and in Mesa's order: the view volume's six

@@ -25,6 +25,7 @@ PrimVertex screen_lerp(const PrimVertex& a, const PrimVertex& b, float t) {
   v.inv_w = a.inv_w + t * (b.inv_w - a.inv_w);
   for (int i = 0; i < kAttrCount; ++i) v.attr[i] = a.attr[i] + t * (b.attr[i] - a.attr[i]);
   v.edge = true;
+  v.point_size = a.point_size;
   return v;
 }
 
@@ -100,10 +101,18 @@ PrimAssembler::PrimAssembler(const FragmentState& fragment, const Viewport& view
     : frag_(fragment), viewport_(viewport), fb_height_(fb_height), flat_(flat),
       planes_(fragment.clip, projection), stipple_counter_(stipple_counter) {}
 
-PrimVertex PrimAssembler::make_vertex(const glm::vec4& clip) const {
+float derived_point_size(const PointState& p, float eye_z) {
+  const float d = std::fabs(eye_z);
+  const float f = d * (d * p.attenuation.z + p.attenuation.y) + p.attenuation.x;
+  const float size = (1.0f / std::sqrt(f)) * p.size;
+  return std::fmin(std::fmax(size, p.min_size), p.max_size);
+}
+
+PrimVertex PrimAssembler::make_vertex(const glm::vec4& clip, float eye_z) const {
   PrimVertex v;
   v.clip = clip;
   v.edge = true;
+  v.point_size = frag_.point.attenuated() ? derived_point_size(frag_.point, eye_z) : frag_.point.size;
   to_down_window(v, viewport_, fb_height_);
   return v;
 }
@@ -228,7 +237,7 @@ void PrimAssembler::smooth_line(const PrimVertex& a, const PrimVertex& b, bool f
 void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t provoking, PieceSink& sink) {
   if (PrimitiveObserver* o = frag_.observer) return o->point(observed(v, front, fb_height_));
   if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a point
-  const float size = clamp_size(frag_.point.size);
+  const float size = clamp_size(v.point_size);  // glPointSize's, or the derived size
   Piece& p = piece_;
   p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
   p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;

@@ -28,6 +28,11 @@ struct Coverage {
   float a = 0, b = 0;
 };
 
+/// An attenuated point's derived size at eye-space z (GL 1.4 section 3.3) as Mesa's
+/// fixed-function vertex program computes it: d = |z|, a + d (b + d c), its reciprocal square
+/// root times the size, then at least min_size (a NaN becomes min_size) and at most max_size.
+float derived_point_size(const PointState& p, float eye_z);
+
 /// The alpha factor at GL window position (x, y) (a pixel centre); negative: discarded.
 float coverage_at(const Coverage& c, double x, double y);
 
@@ -69,8 +74,9 @@ class PrimAssembler {
   PrimAssembler(const FragmentState& fragment, const Viewport& viewport, const glm::mat4& projection,
                 int fb_height, bool flat, std::uint32_t stipple_counter);
 
-  /// A vertex at `clip`: window position and outcode computed; attributes left to the caller.
-  PrimVertex make_vertex(const glm::vec4& clip) const;
+  /// A vertex at `clip` whose eye-space z is `eye_z`: window position and, for attenuated
+  /// points, the derived size computed; attributes left to the caller.
+  PrimVertex make_vertex(const glm::vec4& clip, float eye_z) const;
   std::uint32_t outcode(const PrimVertex& v) const { return planes_.outcode(v.clip); }
 
   /// A segment of GL_LINES or a strip (LineSegment flags); `provoking` is the draw's index of

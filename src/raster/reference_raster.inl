@@ -71,7 +71,7 @@ inline void texture_derivatives(const WindowVertex* const v[3], const FixedPoint
     const FloatWeights w = texcoord_weights(v, double(edge_function(p[1], p[2], c)),
                                             double(edge_function(p[2], p[0], c)), inv_area, affine);
     return project_texcoord(texcoord_at(v, kTexCoord, w), texcoord_at(v, kTexCoord + 1, w),
-                            texcoord_at(v, kTexCoord + 3, w));
+                            texcoord_at(v, kTexCoord + 2, w), texcoord_at(v, kTexCoord + 3, w));
   });
 }
 

@@ -36,13 +36,14 @@ inline float texcoord_plane(float a0, float a1, float a2, FloatWeights w) {
   return (a2 + t0) + t1;
 }
 
-/// (s / q, t / q) from interpolated (s, t, q), made finite for the samplers (finite_texcoord).
+/// (s / q, t / q, r / q) from interpolated (s, t, r, q), made finite for the samplers
+/// (finite_texcoord); r matters to 3D textures only.
 struct ProjectedTexcoord {
-  float s, t;
+  float s, t, r;
 };
 
-inline ProjectedTexcoord project_texcoord(float s, float t, float q) {
-  return {finite_texcoord(s / q), finite_texcoord(t / q)};
+inline ProjectedTexcoord project_texcoord(float s, float t, float r, float q) {
+  return {finite_texcoord(s / q), finite_texcoord(t / q), finite_texcoord(r / q)};
 }
 
 /// llvmpipe's level-of-detail differences for the 2x2 quad of GL rows (top, top - 1) and
@@ -53,8 +54,8 @@ inline ProjectedTexcoord project_texcoord(float s, float t, float q) {
 template <class At>
 TextureDerivatives quad_derivatives(int x, int y, int height, At&& at) {
   const int left = x & ~1, top = height - 1 - ((height - 1 - y) & ~1);
-  const ProjectedTexcoord c = at(left, top), r = at(left + 1, top), b = at(left, top - 1);
-  return {r.s - c.s, r.t - c.t, b.s - c.s, b.t - c.t};
+  const ProjectedTexcoord c = at(left, top), right = at(left + 1, top), b = at(left, top - 1);
+  return {right.s - c.s, right.t - c.t, b.s - c.s, b.t - c.t, right.r - c.r, b.r - c.r};
 }
 
 }  // namespace shadelab::detail

@@ -1,6 +1,7 @@
 // Texture completeness, mipmap generation, filtered sampling with wrap modes, the border
-// colour and llvmpipe's level-of-detail selection, and the texture environment (GL 1.1
-// sections 3.8.1-3.8.9, table 3.22).
+// colour and llvmpipe's level-of-detail selection (with GL 1.2's base and maximum levels and
+// LOD clamps and GL 1.4's bias), and the texture environment (GL 1.1 sections 3.8.1-3.8.9,
+// table 3.22; GL 1.5 sections 3.8.7-3.8.10).
 #include "shadelab/texture.hpp"
 
 #include <algorithm>
@@ -16,34 +17,62 @@ bool uses_mipmaps(TextureFilter f) {
   return f != TextureFilter::kNearest && f != TextureFilter::kLinear;
 }
 
-// Texel coordinate i wrapped into [0, size) for repeat, or clamped (GL_CLAMP may return -1 or
-// size, meaning the border, which is the border colour).
+// Texel coordinate i wrapped into [0, size) for repeat, or clamped (GL_CLAMP and
+// GL_CLAMP_TO_BORDER may return -1 or size and beyond, meaning the border, which is the
+// border colour). Mirrored repeat's indices are already mirrored: only clamped.
 int wrap_index(int i, int size, TextureWrap wrap) {
   switch (wrap) {
     case TextureWrap::kRepeat: return ((i % size) + size) % size;
-    case TextureWrap::kClampToEdge: return std::clamp(i, 0, size - 1);
+    case TextureWrap::kClampToEdge: case TextureWrap::kMirroredRepeat: return std::clamp(i, 0, size - 1);
     case TextureWrap::kClamp: return std::clamp(i, -1, size);
+    case TextureWrap::kClampToBorder: return i;
   }
   return 0;
 }
 
-// s (or t) before filtering: repeat keeps it (the index wraps), the clamps limit it.
+// llvmpipe's mirror (lp_build_coord_mirror): |2 (s/2 - round(s/2))|, rounded half to even;
+// exact in float.
+float mirror(float s) {
+  const float h = s * 0.5f;
+  const float f = h - std::nearbyint(h);
+  return std::fabs(f + f);
+}
+
+// s (or t) before filtering: repeat keeps it (the index wraps), the clamps limit it, mirrored
+// repeat mirrors it into [0, 1]. Clamp to border keeps it within [-1, 2]: beyond, every
+// texel a filter reads is the border all the same, and indices stay small.
 float wrap_coord(float s, int size, TextureWrap wrap) {
-  if (wrap == TextureWrap::kClamp) return std::clamp(s, 0.0f, 1.0f);
-  if (wrap == TextureWrap::kClampToEdge) {
-    float half = 0.5f / float(size);
-    return std::clamp(s, half, 1.0f - half);
+  switch (wrap) {
+    case TextureWrap::kClamp: return std::clamp(s, 0.0f, 1.0f);
+    case TextureWrap::kClampToEdge: {
+      float half = 0.5f / float(size);
+      return std::clamp(s, half, 1.0f - half);
+    }
+    case TextureWrap::kClampToBorder: return std::clamp(s, -1.0f, 2.0f);
+    case TextureWrap::kMirroredRepeat: return mirror(s);
+    case TextureWrap::kRepeat: break;
   }
   return s - std::floor(s);
 }
 
-// Texel (i, j) of a level in byte units (0 to 255; the border colour times 255); j is ignored
-// by 1D textures.
-glm::vec4 texel(const TextureLevel& l, int i, int j, const Texture& t) {
+// Nearest filtering's index from u (texels): repeat wraps it later; the clamps and mirrored
+// repeat (u >= 0 there) keep it in the level (s = 1 picks the last texel); clamp to border
+// keeps it, the border lying outside.
+int nearest_index(float u, int size, TextureWrap wrap) {
+  const int i = int(std::floor(u));
+  if (wrap == TextureWrap::kRepeat || wrap == TextureWrap::kClampToBorder) return i;
+  return std::clamp(i, 0, size - 1);
+}
+
+// Texel (i, j, k) of a level in byte units (0 to 255; the border colour times 255); j is
+// ignored by 1D textures, k by 1D and 2D ones.
+glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t) {
   i = wrap_index(i, l.width, t.wrap_s);
   j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, t.wrap_t);
-  if (i < 0 || j < 0 || i >= l.width || j >= l.height) return t.border_color * 255.0f;
-  const std::uint8_t* p = &l.rgba[(std::size_t(j) * std::size_t(l.width) + std::size_t(i)) * 4];
+  k = t.dimensions < 3 ? 0 : wrap_index(k, l.depth, t.wrap_r);
+  if (i < 0 || j < 0 || k < 0 || i >= l.width || j >= l.height || k >= l.depth) return border_texel(t) * 255.0f;
+  const std::size_t row = std::size_t(k) * std::size_t(l.height) + std::size_t(j);
+  const std::uint8_t* p = &l.rgba[(row * std::size_t(l.width) + std::size_t(i)) * 4];
   return glm::vec4(p[0], p[1], p[2], p[3]);
 }
 
@@ -51,27 +80,35 @@ glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w *
 
 // One level's filtered texel in byte units. The arithmetic, operation by operation, is what
 // the fast pipeline's samplers do on every SIMD target (fast/texture-inl.h): keep them equal.
-glm::vec4 sample_level(const Texture& t, int level, glm::vec2 st, bool linear) {
+glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) {
   const TextureLevel& l = t.levels[std::size_t(level)];
-  const bool one_d = t.dimensions == 1;
-  float u = wrap_coord(st.x, l.width, t.wrap_s) * float(l.width);
-  float v = one_d ? 0.0f : wrap_coord(st.y, l.height, t.wrap_t) * float(l.height);
-  if (!linear) {  // nearest never reads the border: s = 1 picks the last texel
-    int i = int(std::floor(u)), j = int(std::floor(v));
-    if (t.wrap_s != TextureWrap::kRepeat) i = std::clamp(i, 0, l.width - 1);
-    if (t.wrap_t != TextureWrap::kRepeat) j = std::clamp(j, 0, l.height - 1);
-    return texel(l, i, j, t);
+  const bool one_d = t.dimensions == 1, three_d = t.dimensions == 3;
+  float u = wrap_coord(str.x, l.width, t.wrap_s) * float(l.width);
+  float v = one_d ? 0.0f : wrap_coord(str.y, l.height, t.wrap_t) * float(l.height);
+  float w = three_d ? wrap_coord(str.z, l.depth, t.wrap_r) * float(l.depth) : 0.0f;
+  if (!linear) {  // nearest reads the border only with clamp to border
+    const int i = nearest_index(u, l.width, t.wrap_s);
+    const int j = one_d ? 0 : nearest_index(v, l.height, t.wrap_t);
+    const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : 0;
+    return texel(l, i, j, k, t);
   }
   float uu = u - 0.5f;
   int i0 = int(std::floor(uu));
   float a = uu - std::floor(uu);
-  if (one_d) return lerp(texel(l, i0, 0, t), texel(l, i0 + 1, 0, t), a);
+  if (one_d) return lerp(texel(l, i0, 0, 0, t), texel(l, i0 + 1, 0, 0, t), a);
   float vv = v - 0.5f;
   int j0 = int(std::floor(vv));
   float b = vv - std::floor(vv);
-  const glm::vec4 top = lerp(texel(l, i0, j0, t), texel(l, i0 + 1, j0, t), a);
-  const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, t), texel(l, i0 + 1, j0 + 1, t), a);
-  return lerp(top, bottom, b);
+  auto slice = [&](int k) {
+    const glm::vec4 top = lerp(texel(l, i0, j0, k, t), texel(l, i0 + 1, j0, k, t), a);
+    const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, k, t), texel(l, i0 + 1, j0 + 1, k, t), a);
+    return lerp(top, bottom, b);
+  };
+  if (!three_d) return slice(0);
+  float ww = w - 0.5f;
+  int k0 = int(std::floor(ww));
+  float c = ww - std::floor(ww);
+  return lerp(slice(k0), slice(k0 + 1), c);
 }
 
 // x = m 2^e with m in [0.5, 1) (frexp); 0, infinities and NaN count as 0 (llvmpipe replaces
@@ -101,23 +138,86 @@ int rounded_half_log2(float x) {
 
 }  // namespace
 
-int Texture::last_level() const {
-  if (levels.empty()) return 0;
-  int size = std::max(levels[0].width, dimensions == 1 ? 1 : levels[0].height), n = 0;
+namespace {
+
+// log2 of a level's largest side (the sides a texture of `dimensions` uses).
+int size_log2(const TextureLevel& l, int dimensions) {
+  int size = std::max({l.width, dimensions == 1 ? 1 : l.height, dimensions == 3 ? l.depth : 1}), n = 0;
   while (size > 1) size /= 2, ++n;
-  return std::min(n, int(levels.size()) - 1);
+  return n;
+}
+
+}  // namespace
+
+int Texture::last_level() const {
+  if (base_level < 0 || std::size_t(base_level) >= levels.size()) return base_level;
+  const int n = size_log2(levels[std::size_t(base_level)], dimensions);
+  return std::min({base_level + n, max_level, int(levels.size()) - 1});
 }
 
 bool Texture::complete() const {
-  if (levels.empty() || levels[0].width <= 0 || levels[0].height <= 0) return false;
+  if (base_level < 0 || std::size_t(base_level) >= levels.size()) return false;
+  const TextureLevel& b = levels[std::size_t(base_level)];
+  if (b.width <= 0 || b.height <= 0 || b.depth <= 0) return false;
   if (!uses_mipmaps(min_filter)) return true;
-  int w = levels[0].width, h = levels[0].height;
-  for (std::size_t i = 1;; ++i) {
-    if (w == 1 && h == 1) return true;
+  if (max_level < base_level) return false;
+  const int q = std::min(base_level + size_log2(b, dimensions), max_level);
+  int w = b.width, h = b.height, d = b.depth;
+  for (int i = base_level + 1; i <= q; ++i) {
     w = std::max(1, w / 2);
     h = std::max(1, h / 2);
-    if (i >= levels.size() || levels[i].width != w || levels[i].height != h) return false;
+    d = std::max(1, d / 2);
+    if (std::size_t(i) >= levels.size()) return false;
+    const TextureLevel& l = levels[std::size_t(i)];
+    if (l.width != w || l.height != h || (dimensions == 3 && l.depth != d)) return false;
   }
+  return true;
+}
+
+glm::vec4 border_texel(const Texture& t) {
+  const glm::vec4& b = t.border_color;
+  switch (t.format) {
+    case TextureFormat::kAlpha: return {0.0f, 0.0f, 0.0f, b.a};
+    case TextureFormat::kLuminance: return {b.r, b.r, b.r, 1.0f};
+    case TextureFormat::kLuminanceAlpha: return {b.r, b.r, b.r, b.a};
+    case TextureFormat::kIntensity: return glm::vec4(b.r);
+    case TextureFormat::kRgb: return {b.r, b.g, b.b, 1.0f};
+    case TextureFormat::kRgba: break;
+  }
+  return b;
+}
+
+namespace {
+
+// Mesa's util_quantize_lod_bias: within [-16, 16], rounded to 1/256 (half away from zero).
+float quantize_bias(float b) {
+  if (!(b == b)) return 0.0f;
+  return std::round(std::clamp(b, -16.0f, 16.0f) * 256.0f) / 256.0f;
+}
+
+}  // namespace
+
+// llvmpipe's static sampler state (lp_sampler_static_sampler_state): the bias applies when it
+// is not 0, the min clamp when above 0 (Mesa's sampler keeps min_lod >= 0), the max clamp
+// below 15 (PIPE_MAX_TEXTURE_LEVELS - 1); equal clamps force their level, which the two
+// clamps give too.
+TextureLod texture_lod(const Texture& t, float unit_bias) {
+  TextureLod l;
+  l.bias = std::clamp(quantize_bias(t.lod_bias) + quantize_bias(unit_bias), -kMaxTextureLodBias, kMaxTextureLodBias);
+  l.min_lod = t.min_lod > 0.0f ? t.min_lod : 0.0f;  // NaN too
+  l.max_lod = t.max_lod == t.max_lod ? t.max_lod : 0.0f;
+  l.apply_min = l.min_lod > 0.0f;
+  l.apply_max = l.max_lod < 15.0f;
+  l.adjusted = l.bias != 0.0f || l.apply_min || l.apply_max;
+  return l;
+}
+
+float adjusted_lod(float rho2, const TextureLod& l) {
+  float lod = 0.5f * fast_log2(rho2);
+  lod = lod + l.bias;
+  if (l.apply_max) lod = std::min(lod, l.max_lod);
+  if (l.apply_min) lod = std::max(lod, l.min_lod);
+  return std::clamp(lod, -128.0f, 64.0f);
 }
 
 void generate_mipmaps(Texture& texture) {
@@ -150,11 +250,18 @@ void generate_mipmaps(Texture& texture) {
 // lp_build_rho (exact, "no_rho_approx", llvmpipe's default since Mesa 20): each difference
 // scaled by level 0's size and squared, in float.
 float texture_rho2(const Texture& t, const TextureDerivatives& d) {
-  const float w = float(t.levels[0].width), h = float(t.levels[0].height);
+  const TextureLevel& base = t.levels[std::size_t(t.base_level)];
+  const float w = float(base.width), h = float(base.height);
   const float sx = d.ds_dx * w, sy = d.ds_dy * w;
   if (t.dimensions == 1) return std::max(sx * sx, sy * sy);
   const float tx = d.dt_dx * h, ty = d.dt_dy * h;
-  return std::max(sx * sx + tx * tx, sy * sy + ty * ty);
+  float x2 = sx * sx + tx * tx, y2 = sy * sy + ty * ty;
+  if (t.dimensions == 3) {  // lp_build_rho: the r terms added last
+    const float depth = float(base.depth), rx = d.dr_dx * depth, ry = d.dr_dy * depth;
+    x2 = x2 + rx * rx;
+    y2 = y2 + ry * ry;
+  }
+  return std::max(x2, y2);
 }
 
 float finite_texcoord(float v) {
@@ -163,26 +270,40 @@ float finite_texcoord(float v) {
 }
 
 // lp_build_lod_selector and lp_build_sample_soa's level choice (GL 1.1 section 3.8.6 with the
-// later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR where the lod,
-// 0.5 fast_log2(rho2), is above 0); levels past the last one clamp.
-glm::vec4 sample_texture(const Texture& t, glm::vec2 st, float rho2) {
-  return sample_texture_bytes(t, st, rho2) * (1.0f / 255.0f);
+// later specifications' c = 0): minified where rho2 > 1 (for *_MIPMAP_LINEAR, or with
+// adjustments, where lambda is above 0); levels from the base level on, past the last one
+// clamped.
+glm::vec4 sample_texture(const Texture& t, glm::vec3 st, float rho2, float unit_bias) {
+  return sample_texture_bytes(t, st, rho2, unit_bias) * (1.0f / 255.0f);
 }
 
 // In byte units; sample_texture scales them by 1/255 (a float product: one rounding of the
 // reciprocal away from the quotient) once at the end.
-glm::vec4 sample_texture_bytes(const Texture& t, glm::vec2 st, float rho2) {
+glm::vec4 sample_texture_bytes(const Texture& t, glm::vec3 st, float rho2, float unit_bias) {
   const TextureFilter f = t.min_filter;
   const bool linear_mip = f == TextureFilter::kNearestMipmapLinear || f == TextureFilter::kLinearMipmapLinear;
-  const float lod = linear_mip ? 0.5f * fast_log2(rho2) : 0.0f;
-  const bool minified = linear_mip ? lod > 0.0f : rho2 > 1.0f;
-  if (!minified) return sample_level(t, 0, st, t.mag_filter == TextureFilter::kLinear);
-  if (!uses_mipmaps(f)) return sample_level(t, 0, st, f == TextureFilter::kLinear);
+  const TextureLod adjust = texture_lod(t, unit_bias);
+  float lod = 0.0f;
+  bool minified;
+  if (adjust.adjusted) {
+    lod = adjusted_lod(rho2, adjust);
+    minified = lod > 0.0f;
+  } else {
+    if (linear_mip) lod = 0.5f * fast_log2(rho2);
+    minified = linear_mip ? lod > 0.0f : rho2 > 1.0f;
+  }
+  const int base = t.base_level;
+  if (!minified) return sample_level(t, base, st, t.mag_filter == TextureFilter::kLinear);
+  if (!uses_mipmaps(f)) return sample_level(t, base, st, f == TextureFilter::kLinear);
   const int last = t.last_level();
   const bool linear_in_level = f == TextureFilter::kLinearMipmapNearest || f == TextureFilter::kLinearMipmapLinear;
-  if (!linear_mip) return sample_level(t, std::clamp(rounded_half_log2(rho2), 0, last), st, linear_in_level);
-  const int level = int(std::floor(lod));
-  const float frac = lod - float(level);
+  if (!linear_mip) {  // adjusted: lp_build_iround, half to even
+    const int i = adjust.adjusted ? int(std::nearbyint(lod)) : rounded_half_log2(rho2);
+    return sample_level(t, std::clamp(base + i, base, last), st, linear_in_level);
+  }
+  const float floor = std::floor(lod);
+  const int level = base + int(floor);
+  const float frac = lod - floor;
   if (level >= last) return sample_level(t, last, st, linear_in_level);
   return lerp(sample_level(t, level, st, linear_in_level), sample_level(t, level + 1, st, linear_in_level), frac);
 }

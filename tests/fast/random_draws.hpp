@@ -128,6 +128,34 @@ class RandomDraws {
     }
   }
 
+  /// Adds GL 1.4's blending and stencil state to a draw: any equation, factors (the constant
+  /// colour's too) chosen apart for alpha or not, a constant colour (sometimes 0 or 1 exactly),
+  /// and the wrapping stencil operations among the others, sometimes with the stencil test
+  /// turned on for them.
+  void blend_extras(RandomDraw& d) {
+    BlendState& b = d.frag.blend;
+    b.enabled = chance(0.85);
+    b.equation = BlendEquation(integer(0, 4));
+    b.src = any_blend_factor();
+    b.dst = any_blend_factor();
+    b.src_alpha = chance(0.3) ? b.src : any_blend_factor();
+    b.dst_alpha = chance(0.3) ? b.dst : any_blend_factor();
+    b.color = chance(0.1) ? glm::vec4(float(integer(0, 1)), float(integer(0, 1)), 0.0f, 1.0f) : color(0.0f);
+    StencilState& s = d.frag.stencil;
+    if (!s.enabled && chance(0.3)) {
+      s = {true, compare_func(), std::uint8_t(integer(0, 3)), std::uint8_t(integer(0, 255)),
+           std::uint8_t(integer(0, 255)), StencilOp::kKeep, StencilOp::kKeep, StencilOp::kKeep};
+      if (chance(0.5)) s.value_mask = s.write_mask = 0xff;
+    }
+    if (s.enabled) {
+      for (StencilOp* op : {&s.fail, &s.depth_fail, &s.pass}) {
+        *op = chance(0.6) ? (chance(0.5) ? StencilOp::kIncrWrap : StencilOp::kDecrWrap) : StencilOp(integer(0, 7));
+      }
+    }
+  }
+
+  BlendFactor any_blend_factor() { return BlendFactor(integer(0, 14)); }
+
   /// A draw of lines, points or polygons in GL_LINE / GL_POINT mode (or a mix), with random
   /// widths, sizes, stipple, smoothing, polygon modes and offsets, edge flags and clip planes.
   RandomDraw prim_draw(glm::ivec2 fb_size) {
@@ -274,6 +302,13 @@ class RandomDraws {
     FragmentState& f = d.frag;
     f.line = {prim_size(), chance(0.2), chance(0.3), std::uint16_t(integer(0, 0xffff)), std::uint16_t(integer(1, 4))};
     f.point = {prim_size(), chance(0.2)};
+    if (chance(0.3)) {  // GL 1.4's distance attenuation: a size per point from its eye distance
+      f.point.attenuation = {uniform(0.0f, 2.0f), chance(0.5) ? uniform(0.0f, 0.5f) : 0.0f, uniform(0.0f, 0.3f)};
+      if (chance(0.1)) f.point.attenuation = {0.0f, 0.0f, 0.0f};  // infinite sizes, clamped
+      f.point.size = uniform(1, 40);
+      f.point.min_size = chance(0.5) ? 1.0f : uniform(0.0f, 6.0f);
+      f.point.max_size = chance(0.5) ? 255.0f : uniform(2.0f, 30.0f);
+    }
     if (unfilled) {
       f.front_mode = PolygonMode(integer(0, 2));
       f.back_mode = PolygonMode(integer(0, 2));

@@ -1,6 +1,7 @@
 // Texturing on the fast pipeline's SIMD path against the reference (texture-inl.h against
-// texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode, base
-// format and environment mode, 1D and 2D, mipmapped or not, on floors and walls seen in
+// texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode (mirrored
+// repeat and clamp to border too), base format and environment mode, 1D, 2D and 3D (up to
+// 32^3, r varying over the triangles), mipmapped or not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
 // perspective (every mipmap level in one picture), orthographically, and with projective
 // coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
@@ -9,6 +10,7 @@
 // other state.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 #include <sstream>
@@ -19,33 +21,58 @@
 namespace shadelab {
 namespace {
 
-// A texture of random size (1 to 256 a side, any aspect), noisy checkerboard texels, every
-// parameter random; mipmapped when the filter needs it (and sometimes otherwise).
-std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d) {
+// A 3D chain below level 0: each level halves every side, texels random around the level's
+// own shade.
+void random_levels_3d(std::mt19937& rng, Texture& t) {
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  while (t.levels.back().width > 1 || t.levels.back().height > 1 || t.levels.back().depth > 1) {
+    const TextureLevel& src = t.levels.back();
+    TextureLevel dst;
+    dst.width = std::max(1, src.width / 2), dst.height = std::max(1, src.height / 2), dst.depth = std::max(1, src.depth / 2);
+    const int shade = pick(0, 200);
+    for (int i = 0; i < dst.width * dst.height * dst.depth * 4; ++i) dst.rgba.push_back(std::uint8_t(shade + pick(0, 55)));
+    t.levels.push_back(std::move(dst));
+  }
+}
+
+// A texture of random size (1 to 256 a side, any aspect; 3D: up to 32^3), noisy checkerboard
+// texels, every parameter random; mipmapped when the filter needs it (and sometimes
+// otherwise).
+std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool three_d = false) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   auto t = std::make_shared<Texture>();
   TextureLevel level;
-  t->dimensions = one_d ? 1 : 2;
-  level.width = 1 << pick(0, 8);
-  level.height = one_d ? 1 : 1 << pick(0, 8);
+  t->dimensions = one_d ? 1 : three_d ? 3 : 2;
+  level.width = 1 << pick(0, three_d ? 5 : 8);
+  level.height = one_d ? 1 : 1 << pick(0, three_d ? 5 : 8);
+  level.depth = three_d ? 1 << pick(0, 5) : 1;
   const int squares = 1 << pick(0, 4);
-  for (int j = 0; j < level.height; ++j) {
-    for (int i = 0; i < level.width; ++i) {
-      const bool on = ((i * squares / level.width) + (j * squares / level.height)) & 1;
-      for (int c = 0; c < 4; ++c) level.rgba.push_back(std::uint8_t(on ? pick(150, 255) : pick(0, 100)));
+  for (int k = 0; k < level.depth; ++k) {
+    for (int j = 0; j < level.height; ++j) {
+      for (int i = 0; i < level.width; ++i) {
+        const bool on = ((i * squares / level.width) + (j * squares / level.height) + (k * squares / level.depth)) & 1;
+        for (int c = 0; c < 4; ++c) level.rgba.push_back(std::uint8_t(on ? pick(150, 255) : pick(0, 100)));
+      }
     }
   }
   t->levels.push_back(level);
   t->min_filter = TextureFilter(pick(0, 5));
   t->mag_filter = pick(0, 1) ? TextureFilter::kNearest : TextureFilter::kLinear;
-  if (t->min_filter != TextureFilter::kNearest && t->min_filter != TextureFilter::kLinear) {
-    generate_mipmaps(*t);
-  } else if (pick(0, 3) == 0) {
-    generate_mipmaps(*t);
-  }
-  t->wrap_s = TextureWrap(pick(0, 2));
-  t->wrap_t = TextureWrap(pick(0, 2));
+  const bool mipmapped = t->min_filter != TextureFilter::kNearest && t->min_filter != TextureFilter::kLinear;
+  if (mipmapped || pick(0, 3) == 0) three_d ? random_levels_3d(rng, *t) : generate_mipmaps(*t);
+  t->wrap_r = TextureWrap(pick(0, 4));
+  t->wrap_s = TextureWrap(pick(0, 4));
+  t->wrap_t = TextureWrap(pick(0, 4));
   t->format = TextureFormat(pick(0, 5));
+  if (pick(0, 1)) {  // GL 1.2-1.4 level-of-detail state
+    auto real = [&](float lo, float hi) { return std::uniform_real_distribution<float>(lo, hi)(rng); };
+    const int levels = int(t->levels.size());
+    if (pick(0, 2) == 0) t->base_level = pick(0, levels - 1);
+    if (pick(0, 2) == 0) t->max_level = t->base_level + pick(0, 3);
+    if (pick(0, 2) == 0) t->min_lod = pick(0, 1) ? real(-2.0f, 4.0f) : float(pick(0, 3));
+    if (pick(0, 2) == 0) t->max_lod = pick(0, 1) ? real(-1.0f, 6.0f) : float(pick(0, 5));
+    if (pick(0, 2) == 0) t->lod_bias = pick(0, 1) ? real(-4.0f, 4.0f) : float(pick(-2, 2));
+  }
   t->border_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
   return t;
 }
@@ -72,7 +99,8 @@ TexturedScene textured_scene(unsigned seed) {
   scene.exact = pick(0, 2) == 0;
   for (int k = 0; k < count; ++k) {
     test::RandomDraw d;
-    d.texture = random_texture(rng, pick(0, 4) == 0);
+    const int kind = pick(0, 5);  // 1D, 2D or 3D
+    d.texture = random_texture(rng, kind == 0, kind == 5);
     const int shape = pick(0, 2);
     const float repeat = pick(0, 2) == 0 ? real(0.05f, 1.5f) : real(1.0f, 64.0f);
     const float s0 = real(-2.0f, 2.0f), t0 = real(-2.0f, 2.0f);
@@ -96,7 +124,8 @@ TexturedScene textured_scene(unsigned seed) {
     const glm::vec2 st[4] = {{s0, t0}, {s0 + repeat, t0}, {s0 + repeat, t0 + repeat}, {s0, t0 + repeat}};
     for (int i = 0; i < 4; ++i) {
       const float q = projective ? real(0.3f, 3.0f) : 1.0f;
-      d.texcoords.push_back({st[i].x * q, st[i].y * q, 0.0f, q});
+      const float r = kind == 5 ? real(-1.5f, 2.5f) : 0.0f;
+      d.texcoords.push_back({st[i].x * q, st[i].y * q, r * q, q});
       d.colors.push_back({real(0, 1), real(0, 1), real(0, 1), real(0.2f, 1)});
     }
     d.triangles = {{0, 1, 2}, {0, 2, 3}};
@@ -105,6 +134,7 @@ TexturedScene textured_scene(unsigned seed) {
     d.shade.lighting = false;
     d.shade.texture = d.texture.get();
     d.shade.texture_env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+    if (pick(0, 3) == 0) d.shade.texture_lod_bias = real(-3.0f, 3.0f);
     d.frag.depth_test = pick(0, 1);
     if (scene.exact) {
       d.texture->format = TextureFormat::kRgba;

@@ -1,6 +1,7 @@
 // Texture sampling on tiny synthetic textures: nearest and bilinear values worked out by hand,
-// wrap modes and the border colour, 1D textures, completeness, mipmap generation, llvmpipe's
-// level of detail (rho^2, its level choice), environment modes.
+// wrap modes (mirrored repeat, clamp to border) and the border colour, 1D textures,
+// completeness with base and maximum levels, mipmap generation, llvmpipe's level of detail
+// (rho^2, its level choice, the bias and the LOD clamps), environment modes.
 #include <gtest/gtest.h>
 
 #include "shadelab/texture.hpp"
@@ -20,7 +21,7 @@ Texture two_by_two(TextureFilter filter, TextureWrap wrap) {
 
 // rho2: the squared scale factor (0.25: magnified twice).
 float red_at(const Texture& t, float s, float tt, float rho2 = 0.25f) {
-  return sample_texture(t, {s, tt}, rho2).r * 255.0f;
+  return sample_texture(t, {s, tt, 0.0f}, rho2).r * 255.0f;
 }
 
 TEST(Texture, NearestPicksTheTexelContainingThePoint) {
@@ -50,12 +51,12 @@ TEST(Texture, RepeatWrapsAcrossTheEdgeWhenFiltering) {
 TEST(Texture, ClampBlendsWithTheBorderColour) {
   Texture t = two_by_two(TextureFilter::kLinear, TextureWrap::kClamp);
   // s = 0: half the border (by default (0, 0, 0, 0)) and half texel 0 -> alpha 0.5.
-  EXPECT_NEAR(sample_texture(t, {0.0f, 0.25f}, 0.25f).a, 0.5f, 1e-6);
+  EXPECT_NEAR(sample_texture(t, {0.0f, 0.25f, 0.0f}, 0.25f).a, 0.5f, 1e-6);
   t.border_color = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
   // Red: half of 255 (border) and half of 0 (texel 0).
   EXPECT_NEAR(red_at(t, 0.0f, 0.25f), 127.5f, 1e-3);
   Texture e = two_by_two(TextureFilter::kLinear, TextureWrap::kClampToEdge);
-  EXPECT_NEAR(sample_texture(e, {0.0f, 0.25f}, 0.25f).a, 1.0f, 1e-6);
+  EXPECT_NEAR(sample_texture(e, {0.0f, 0.25f, 0.0f}, 0.25f).a, 1.0f, 1e-6);
 }
 
 TEST(Texture, OneDimensionalTexturesIgnoreT) {
@@ -120,6 +121,176 @@ TEST(Texture, MinificationStartsAtRhoOneForEveryFilterPair) {
   generate_mipmaps(t);
   EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 138.75f, 1e-3);  // magnified: bilinear, level 0
   EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.2f), 255.0f, 1e-3);   // nearest, level 0: texel (1, 1)
+}
+
+// 4x1 texture, red 0, 80, 160, 240: mirrored repeat runs 0..3 then 3..0.
+Texture four_wide(TextureFilter filter, TextureWrap wrap) {
+  Texture t;
+  t.levels.push_back({4, 1, {0, 0, 0, 255, 80, 0, 0, 255, 160, 0, 0, 255, 240, 0, 0, 255}});
+  t.min_filter = t.mag_filter = filter;
+  t.wrap_s = wrap;
+  t.wrap_t = TextureWrap::kRepeat;
+  return t;
+}
+
+TEST(Texture, MirroredRepeatReflectsEveryOtherRepeat) {
+  Texture t = four_wide(TextureFilter::kNearest, TextureWrap::kMirroredRepeat);
+  EXPECT_NEAR(red_at(t, 0.1f, 0.5f), 0.0f, 1e-3);
+  EXPECT_NEAR(red_at(t, 1.1f, 0.5f), 240.0f, 1e-3);   // mirrored: 0.9 -> texel 3
+  EXPECT_NEAR(red_at(t, 1.4f, 0.5f), 160.0f, 1e-3);   // 0.6 -> texel 2
+  EXPECT_NEAR(red_at(t, 2.1f, 0.5f), 0.0f, 1e-3);     // repeated again
+  EXPECT_NEAR(red_at(t, -0.1f, 0.5f), 0.0f, 1e-3);    // |-0.1| -> texel 0
+  EXPECT_NEAR(red_at(t, -0.9f, 0.5f), 240.0f, 1e-3);  // 0.9 -> texel 3
+  EXPECT_NEAR(red_at(t, 1.0f, 0.5f), 240.0f, 1e-3);   // the edge: the last texel
+  // Linear across the mirror at s = 1: texel 3 on both sides, whatever the weight.
+  Texture l = four_wide(TextureFilter::kLinear, TextureWrap::kMirroredRepeat);
+  EXPECT_NEAR(red_at(l, 1.0f, 0.5f), 240.0f, 1e-3);
+  EXPECT_NEAR(red_at(l, 1.05f, 0.5f), 240.0f, 1e-3);  // 0.95: u = 3.8 - 0.5, texels 3 and 3
+  // 1.25 -> 0.75: u = 3, uu = 2.5: texels 2 and 3 half and half.
+  EXPECT_NEAR(red_at(l, 1.25f, 0.5f), 200.0f, 1e-3);
+  // Near 0 the first texel is taken twice, as with clamp to edge.
+  EXPECT_NEAR(red_at(l, 0.05f, 0.5f), 0.0f, 1e-3);
+}
+
+TEST(Texture, ClampToBorderTakesTheBorderColourOutside) {
+  Texture t = four_wide(TextureFilter::kNearest, TextureWrap::kClampToBorder);
+  t.border_color = glm::vec4(1.0f, 0.0f, 0.0f, 0.5f);
+  EXPECT_NEAR(red_at(t, 0.9f, 0.5f), 240.0f, 1e-3);
+  EXPECT_NEAR(red_at(t, 1.01f, 0.5f), 255.0f, 1e-3);  // nearest reads the border, unlike GL_CLAMP
+  EXPECT_NEAR(red_at(t, -0.01f, 0.5f), 255.0f, 1e-3);
+  EXPECT_NEAR(red_at(t, 1e6f, 0.5f), 255.0f, 1e-3);
+  EXPECT_NEAR(sample_texture(t, {-3.0f, 0.5f, 0.0f}, 0.25f).a, 0.5f, 1e-6);
+  // Linear: at s = 1 half the last texel and half the border; inside the texels alone.
+  Texture l = four_wide(TextureFilter::kLinear, TextureWrap::kClampToBorder);
+  l.border_color = glm::vec4(1.0f);
+  EXPECT_NEAR(red_at(l, 1.0f, 0.5f), 0.5f * 240.0f + 0.5f * 255.0f, 1e-3);
+  EXPECT_NEAR(red_at(l, 0.5f, 0.5f), 120.0f, 1e-3);
+  EXPECT_NEAR(red_at(l, 1.125f, 0.5f), 255.0f, 1e-3);  // u = 4.5, uu = 4: border only
+  // GL_CLAMP at the same s = 1.125 is clamped to 1 first: half border, half texel.
+  Texture c = four_wide(TextureFilter::kLinear, TextureWrap::kClamp);
+  c.border_color = glm::vec4(1.0f);
+  EXPECT_NEAR(red_at(c, 1.125f, 0.5f), 0.5f * 240.0f + 0.5f * 255.0f, 1e-3);
+}
+
+// A 4x4 chain whose levels are flat reds 40, 120, 240 (level 0 to 2).
+Texture flat_chain(TextureFilter min) {
+  Texture t;
+  t.levels = {{4, 4, std::vector<std::uint8_t>(64, 40)}, {2, 2, std::vector<std::uint8_t>(16, 120)},
+              {1, 1, std::vector<std::uint8_t>(4, 240)}};
+  t.min_filter = min;
+  t.mag_filter = TextureFilter::kNearest;
+  return t;
+}
+
+TEST(Texture, BaseAndMaxLevelLimitTheLevelsSampled) {
+  Texture t = flat_chain(TextureFilter::kNearestMipmapNearest);
+  t.base_level = 1;
+  EXPECT_TRUE(t.complete());
+  EXPECT_EQ(t.last_level(), 2);
+  // Magnified: the base level. rho2 is measured in the base level's texels.
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 0.25f), 120, 1e-3);
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 4.0f), 240, 1e-3);  // lambda 1: base + 1
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1e9f), 240, 1e-3);
+  t.max_level = 1;
+  EXPECT_EQ(t.last_level(), 1);
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1e9f), 120, 1e-3);
+  // A base level of 1x1: one level is a whole chain; levels below the base need not exist.
+  Texture one = flat_chain(TextureFilter::kLinearMipmapLinear);
+  one.levels[0] = {};
+  one.levels[1] = {};
+  one.base_level = 2;
+  EXPECT_TRUE(one.complete());
+  EXPECT_NEAR(red_at(one, 0.3f, 0.8f, 50.0f), 240, 1e-3);
+  // Max level below the base: incomplete with a mipmap filter, complete without one.
+  t.base_level = 2;
+  t.max_level = 1;
+  EXPECT_FALSE(t.complete());
+  t.min_filter = TextureFilter::kLinear;
+  EXPECT_TRUE(t.complete());
+  // A missing level between base and max makes the chain incomplete; max_level can end it
+  // before the gap.
+  Texture gap = flat_chain(TextureFilter::kNearestMipmapLinear);
+  gap.levels.pop_back();
+  EXPECT_FALSE(gap.complete());
+  gap.max_level = 1;
+  EXPECT_TRUE(gap.complete());
+  EXPECT_FALSE(Texture{}.complete());
+}
+
+TEST(Texture, LodBiasAndClampsMoveTheLevel) {
+  Texture t = flat_chain(TextureFilter::kNearestMipmapNearest);
+  // No adjustment: llvmpipe's rho^2 path, lambda 0.5 at rho2 = 2 already level 1.
+  EXPECT_FALSE(texture_lod(t, 0.0f).adjusted);
+  // A bias of +1 at rho2 = 1 (lambda 0): lambda 1, level 1; the bias turns magnification
+  // into minification (nearest within the level, the min filter's).
+  t.lod_bias = 1.0f;
+  EXPECT_TRUE(texture_lod(t, 0.0f).adjusted);
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 120, 1e-3);
+  // The unit's bias adds to it: 1 + 1 = 2.
+  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f, 0.0f}, 1.0f, 1.0f).r * 255.0f, 240, 1e-3);
+  // -1 + 1: back to lambda 0, magnified.
+  EXPECT_NEAR(sample_texture(t, {0.5f, 0.5f, 0.0f}, 1.0f, -1.0f).r * 255.0f, 40, 1e-3);
+  // Adjusted lambdas round half to even: lambda 0.5 (rho2 = 1, bias 0.5) stays at level 0.
+  t.lod_bias = 0.5f;
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 40, 1e-3);
+  t.lod_bias = 1.5f;  // 1.5 rounds to 2
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 240, 1e-3);
+  // The sum is clamped to GL_MAX_TEXTURE_LOD_BIAS; each part quantized to 1/256.
+  t.lod_bias = 100.0f;
+  EXPECT_EQ(texture_lod(t, 100.0f).bias, kMaxTextureLodBias);
+  t.lod_bias = 0.3f;
+  EXPECT_EQ(texture_lod(t, 0.0f).bias, 77.0f / 256.0f);
+  t.lod_bias = 0.0f;
+  // MIN_LOD 1: never the base level, even magnified (lambda clamped to 1 > 0: minified).
+  t.min_lod = 1.0f;
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 0.01f), 120, 1e-3);
+  // MAX_LOD 1: never past level 1.
+  t.min_lod = -1000.0f;
+  t.max_lod = 1.0f;
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1e9f), 120, 1e-3);
+  // MAX_LOD 0: magnified everywhere, the mag filter on the base level.
+  t.max_lod = 0.0f;
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1e9f), 40, 1e-3);
+  // Trilinear with a clamp: lambda = min(0.5 fast_log2(64), 1.25) = 1.25 -> levels 1 and 2.
+  Texture l = flat_chain(TextureFilter::kNearestMipmapLinear);
+  l.max_lod = 1.25f;
+  EXPECT_NEAR(red_at(l, 0.5f, 0.5f, 64.0f), 0.75f * 120 + 0.25f * 240, 1e-3);
+  EXPECT_FLOAT_EQ(adjusted_lod(64.0f, texture_lod(l, 0.0f)), 1.25f);
+  EXPECT_FLOAT_EQ(adjusted_lod(6.0f, texture_lod(l, 0.5f)), 1.25f);  // 1.25 + 0.5, clamped to 1.25
+}
+
+TEST(Texture, ThreeDimensionalTexturesFilterTrilinearly) {
+  // 2x2x2: image 0 red 0 everywhere, image 1 red 200; (1, 1, 1) red 100 instead.
+  Texture t;
+  t.dimensions = 3;
+  TextureLevel l{2, 2, std::vector<std::uint8_t>(32, 0), 2};
+  for (int i = 4; i < 8; ++i) l.rgba[std::size_t(i) * 4] = 200;
+  l.rgba[7 * 4] = 100;
+  t.levels.push_back(l);
+  t.min_filter = t.mag_filter = TextureFilter::kLinear;
+  t.wrap_s = t.wrap_t = t.wrap_r = TextureWrap::kClampToEdge;
+  EXPECT_TRUE(t.complete());
+  auto red = [&](float s, float tt, float r) { return sample_texture(t, {s, tt, r}, 0.25f).r * 255.0f; };
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.25f), 0.0f, 1e-3);
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.75f), 200.0f, 1e-3);
+  EXPECT_NEAR(red(0.75f, 0.75f, 0.75f), 100.0f, 1e-3);
+  EXPECT_NEAR(red(0.25f, 0.25f, 0.5f), 100.0f, 1e-3);  // halfway between the images
+  // Centre: image 1's bilinear mean (200 * 3 + 100) / 4 = 175, half of it.
+  EXPECT_NEAR(red(0.5f, 0.5f, 0.5f), 87.5f, 1e-3);
+  t.min_filter = t.mag_filter = TextureFilter::kNearest;
+  EXPECT_NEAR(red(0.9f, 0.9f, 0.6f), 100.0f, 1e-3);
+  t.wrap_r = TextureWrap::kClampToBorder;
+  t.border_color = glm::vec4(1.0f);
+  EXPECT_NEAR(red(0.9f, 0.9f, 1.2f), 255.0f, 1e-3);
+  // rho^2 adds the r difference in the depth's texels last: (1 + 0) + (0.5 * 2)^2 = 2.
+  EXPECT_FLOAT_EQ(texture_rho2(t, {0.5f, 0.0f, 0.0f, 0.0f, 0.5f, 0.0f}), 2.0f);
+  // A mipmap chain halves the depth too: 2x2x2 then 1x1x1.
+  t.min_filter = TextureFilter::kLinearMipmapLinear;
+  EXPECT_FALSE(t.complete());
+  t.levels.push_back({1, 1, std::vector<std::uint8_t>(4, 9), 2});
+  EXPECT_FALSE(t.complete());
+  t.levels[1].depth = 1;
+  EXPECT_TRUE(t.complete());
 }
 
 TEST(Texture, EnvironmentModes) {

@@ -5,6 +5,7 @@
  * section allows there). After each call the glGetError code is printed to NAME.txt (compared
  * line by line by tools/gl_values) and drawn as a cell. Commands still pending in
  * gl/api/pending.txt join the table when they land. */
+#define GL_GLEXT_PROTOTYPES 1
 #include <stdio.h>
 #include <string.h>
 
@@ -448,6 +449,41 @@ static void inside_begin_end(void) {
   B(glDisableClientState(GL_VERTEX_ARRAY));
 }
 
+/* GL 1.4's per-vertex state: the secondary colour, the fog coordinate, point parameters. */
+static void gl14_vertex_state(void) {
+  static const GLfloat kNegative[3] = {-1.0f, 0.0f, 0.0f};
+  E(glSecondaryColorPointer(2, GL_FLOAT, 0, kFloats));
+  E(glSecondaryColorPointer(5, GL_FLOAT, 0, kFloats));
+  E(glSecondaryColorPointer(3, BAD, 0, kFloats));
+  E(glSecondaryColorPointer(3, GL_FLOAT, -1, kFloats));
+  E(glSecondaryColorPointer(4, GL_UNSIGNED_BYTE, 0, kUbytes));
+  E(glSecondaryColor3fv(kFloats));
+  E(glFogCoordPointer(GL_INT, 0, kFloats));
+  E(glFogCoordPointer(BAD, 0, kFloats));
+  E(glFogCoordPointer(GL_FLOAT, -1, kFloats));
+  E(glFogCoordPointer(GL_DOUBLE, 8, kDoubles));
+  E(glFogCoordfv(kFloats));
+  E(glFogi(GL_FOG_COORD_SRC, GL_LINEAR));
+  E(glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH));
+  E(glPointParameterf(BAD, 1.0f));
+  E(glPointParameterf(GL_POINT_SIZE_MIN, -1.0f));
+  E(glPointParameteri(GL_POINT_SIZE_MAX, -1));
+  E(glPointParameterfv(GL_POINT_FADE_THRESHOLD_SIZE, kNegative));
+  E(glPointParameteriv(BAD, kInts));
+  E(glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, kNegative));
+  E(glPointParameteri(GL_POINT_DISTANCE_ATTENUATION, 1));
+  B(glSecondaryColor3f(1, 0, 0)), B(glSecondaryColor3ubv(kUbytes)), B(glSecondaryColor3dv(kDoubles));
+  B(glFogCoordf(1.0f)), B(glFogCoorddv(kDoubles));
+  B(glSecondaryColorPointer(3, GL_FLOAT, 0, kFloats));
+  B(glFogCoordPointer(GL_FLOAT, 0, kFloats));
+  B(glPointParameterf(GL_POINT_SIZE_MIN, 1.0f));
+  B(glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, kFloats));
+  B(glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD));
+  glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH);
+  glPointParameterf(GL_POINT_SIZE_MIN, 0.0f);
+  glPointParameterfv(GL_POINT_DISTANCE_ATTENUATION, kFloats);
+}
+
 int main(int argc, char** argv) {
   ConfContext c;
   if (!conf_init(&c, argc, argv, 128, 96)) return 1;
@@ -457,6 +493,7 @@ int main(int argc, char** argv) {
   wrong_arguments();
   stacks_and_order();
   inside_begin_end();
+  gl14_vertex_state();
   fclose(out);
   glGetError();
   conf_value_cells(&c, cells, kCells, kCols, kRows);

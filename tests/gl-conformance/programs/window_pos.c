@@ -3,7 +3,9 @@
  * images placed by every glWindowPos form, z mapped into the depth range against a depth
  * test, positions outside the window (valid, partly drawn), the raster colour from the current
  * colour (clamped, never lit), the raster texture coordinates without the texture matrix
- * (a textured glDrawPixels), in display lists; then every GL_CURRENT_RASTER_* value after each
+ * (a textured glDrawPixels), the raster secondary colour from the current one (GL_COLOR_SUM)
+ * and the raster distance from the current fog coordinate (GL_FOG_COORD_SRC), in display
+ * lists; then every GL_CURRENT_RASTER_* value after each
  * form compared with Mesa's, and the errors. */
 #define GL_GLEXT_PROTOTYPES
 #include <string.h>
@@ -32,6 +34,10 @@ static void record_raster(ConfContext* c, const char* when) {
   glGetFloatv(GL_CURRENT_RASTER_TEXTURE_COORDS, v);
   for (int k = 0; k < 4; ++k) d[k] = v[k];
   snprintf(label, sizeof label, "%s texcoords", when);
+  conf_values(c, label, d, 4);
+  glGetFloatv(0x845F /* GL_CURRENT_RASTER_SECONDARY_COLOR */, v);
+  for (int k = 0; k < 4; ++k) d[k] = v[k];
+  snprintf(label, sizeof label, "%s secondary color", when);
   conf_values(c, label, d, 4);
   glGetFloatv(GL_CURRENT_RASTER_DISTANCE, v);
   snprintf(label, sizeof label, "%s distance", when);
@@ -127,6 +133,30 @@ int main(int argc, char** argv) {
   glTexCoord2f(0.1f, 0.9f);
   glWindowPos2i(130, 60), glDrawPixels(20, 12, GL_RGBA, GL_UNSIGNED_BYTE, image), record_raster(&c, "textured 2");
   glDisable(GL_TEXTURE_2D);
+
+  /* The secondary colour (clamped) summed into glyphs, and fog by the current fog coordinate
+   * against fog by the (zero) distance of the other source. */
+  glSecondaryColor3f(0.5f, -0.25f, 1.5f);
+  glColor3f(0.25f, 0.5f, 0.0f);
+  glEnable(GL_COLOR_SUM);
+  glWindowPos2i(10, 90), glBitmap(16, 16, 0, 0, 0, 0, glyph), record_raster(&c, "secondary");
+  glDisable(GL_COLOR_SUM);
+  glSecondaryColor3f(0.0f, 0.0f, 0.0f);
+  glColor3f(1.0f, 1.0f, 1.0f);
+  glFogi(GL_FOG_MODE, GL_LINEAR);
+  glFogf(GL_FOG_START, 0.0f);
+  glFogf(GL_FOG_END, 10.0f);
+  const GLfloat fog_color[4] = {0.0f, 0.0f, 1.0f, 1.0f};
+  glFogfv(GL_FOG_COLOR, fog_color);
+  glEnable(GL_FOG);
+  glFogCoordf(7.5f);
+  glWindowPos2i(40, 90), glBitmap(16, 16, 0, 0, 0, 0, glyph), record_raster(&c, "fog by depth");
+  glFogi(GL_FOG_COORD_SRC, GL_FOG_COORD);
+  glWindowPos2i(70, 90), glBitmap(16, 16, 0, 0, 0, 0, glyph), record_raster(&c, "fog coordinate");
+  glFogCoordf(2.5f);
+  glWindowPos2i(100, 90), glBitmap(16, 16, 0, 0, 0, 0, glyph), record_raster(&c, "fog coordinate 2");
+  glFogi(GL_FOG_COORD_SRC, GL_FRAGMENT_DEPTH);
+  glDisable(GL_FOG);
 
   /* In a display list. */
   GLuint list = glGenLists(1);
