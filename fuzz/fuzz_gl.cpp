@@ -496,7 +496,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)glAreTexturesResident(in.small(-1, 4), names, resident);
         break;
       }
-      case 63: {  // texture coordinate generation
+      case 63: {  // texture coordinate generation, on a texture unit of any number (GL 1.3)
+        if (in.byte() % 2) {
+          glActiveTexture(GL_TEXTURE0 + GLenum(in.small(-1, 4)));
+          glClientActiveTexture(GL_TEXTURE0 + GLenum(in.small(-1, 4)));
+          glMultiTexCoord4f(GL_TEXTURE0 + GLenum(in.small(-1, 4)), in.number(), in.number(), in.number(), in.number());
+          if (in.byte() % 2) glEnableClientState(GL_TEXTURE_COORD_ARRAY);
+        }
         for (int i = 0; i < 4; ++i) f[i] = in.number();
         glTexGenfv(in.any_enum(), in.any_enum(), f);
         glTexGeni(in.any_enum(), in.any_enum(), GLint(in.any_enum()));

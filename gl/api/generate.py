@@ -42,7 +42,8 @@ class Tables:
         cfg = self.config
         self.api = registry.load(registry_path, cfg["features"], cfg.get("extra_enums", []),
                                  cfg.get("khronos_types", {}))
-        self.pending = read_pending(pending_path, {c.name for c in self.api.commands})
+        self.pending, self.pending_features = read_pending(pending_path, {c.name for c in self.api.commands},
+                                                           {name for name, _ in self.api.features})
         self.implemented = [c for c in self.api.commands if c.name not in self.pending]
         self.begin_end = [re.compile(p) for p in cfg["begin_end"]["allowed"]]
         self.not_compiled = [re.compile(p) for p in cfg["display_list"]["not_compiled"]]
@@ -81,6 +82,8 @@ class Tables:
             done.add(name)
             if any(c.name in self.pending for c in self.api.commands if c.feature in done):
                 break
+            if any(feature in done for feature, _ in self.pending_features):
+                break
             number = num
         return number
 
@@ -92,15 +95,19 @@ class Tables:
         return "".join(f"{x} " for x in self.extensions)
 
 
-def read_pending(path: Path, known: set[str]) -> set[str]:
+def read_pending(path: Path, known: set[str], features: set[str]) -> tuple[set[str], list[tuple[str, str]]]:
+    """The pending commands, and the pending parts of features that no command names (a line
+    `GL_VERSION_1_3: what is missing`), as (feature, description) pairs."""
     lines = [ln.strip() for ln in path.read_text().splitlines()]
-    names = [ln for ln in lines if ln and not ln.startswith("#")]
-    unknown = [n for n in names if n not in known]
+    entries = [ln for ln in lines if ln and not ln.startswith("#")]
+    parts = [tuple(s.strip() for s in ln.split(":", 1)) for ln in entries if ":" in ln]
+    names = [ln for ln in entries if ":" not in ln]
+    unknown = [n for n in names if n not in known] + [f for f, _ in parts if f not in features]
     if unknown:
-        raise SystemExit(f"generate: {path}: not commands of the configured features: {', '.join(unknown)}")
+        raise SystemExit(f"generate: {path}: not commands or features of the configuration: {', '.join(unknown)}")
     if names != sorted(names) or len(set(names)) != len(names):
         raise SystemExit(f"generate: {path}: names must be sorted and unique")
-    return set(names)
+    return set(names), parts
 
 
 def write_if_changed(path: Path, text: str) -> None:
@@ -364,6 +371,13 @@ def write_sources(t: Tables, out: Path) -> None:
 
 # ---- coverage and the API check ----
 
+def pending_parts(t: Tables) -> str:
+    if not t.pending_features:
+        return ""
+    items = "; ".join(f"{f.replace('GL_VERSION_', '').replace('_', '.')}: {d}" for f, d in t.pending_features)
+    return f" Pending besides commands (gl/api/pending.txt): {items}."
+
+
 def coverage_md(t: Tables, programs: Path) -> str:
     calls = {p.stem: set(re.findall(r"\b(gl\w+)\s*\(", p.read_text())) for p in sorted(programs.glob("*.c"))}
     rows, called = [], 0
@@ -388,7 +402,7 @@ conformance programs (tests/gl-conformance/programs/) that call it. Generated: r
 
 Totals: {n} commands, {n - len(t.pending)} implemented, {len(t.pending)} pending
 ({'; '.join(totals)}); {called} called by at least one of the {len(calls)} conformance
-programs. glGetString(GL_VERSION) reports {t.version()}; GL_EXTENSIONS lists
+programs.{pending_parts(t)} glGetString(GL_VERSION) reports {t.version()}; GL_EXTENSIONS lists
 {', '.join(f"`{x}`" for x in t.extensions)}{" (their suffixed commands resolve to the core ones: " + ", ".join(f"`{a}`" for a in sorted(t.aliases)) + ")" if t.aliases else ""}.
 
 | command | version | status | conformance programs |

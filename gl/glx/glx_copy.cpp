@@ -29,8 +29,12 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
     for (std::size_t i = 0; i < s.lighting.lights.size(); ++i) d.lighting.lights[i].enabled = s.lighting.lights[i].enabled;
     b.depth_test = a.depth_test, b.blend = a.blend, b.cull = a.cull, b.stencil_test = a.stencil_test;
     b.polygon_offset_fill = a.polygon_offset_fill, b.dither = a.dither;
-    d.textures.enabled_1d = s.textures.enabled_1d, d.textures.enabled_2d = s.textures.enabled_2d;
-    for (std::size_t i = 0; i < 4; ++i) d.textures.gen[i].enabled = s.textures.gen[i].enabled;
+    for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // every texture unit's (GL 1.3)
+      TextureUnitState& to = d.textures.units[u];
+      const TextureUnitState& from = s.textures.units[u];
+      to.enabled_1d = from.enabled_1d, to.enabled_2d = from.enabled_2d, to.enabled_3d = from.enabled_3d;
+      for (std::size_t i = 0; i < 4; ++i) to.gen[i].enabled = from.gen[i].enabled;
+    }
     PrimState& e = d.prims;
     const PrimState& f = s.prims;
     e.point_smooth = f.point_smooth, e.line_smooth = f.line_smooth, e.line_stipple = f.line_stipple;
@@ -68,15 +72,19 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
   }
   if (mask & GL_HINT_BIT) d.hints = s.hints;
   if (mask & GL_TEXTURE_BIT) {
-    d.textures.enabled_1d = s.textures.enabled_1d, d.textures.enabled_2d = s.textures.enabled_2d;
-    d.textures.env_mode = s.textures.env_mode, d.textures.env_color = s.textures.env_color;
-    d.textures.gen = s.textures.gen;
-    if (d.textures.names == s.textures.names) {  // a binding means something only within a share group
-      for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D}) {
-        const TextureBinding& from = s.textures.binding(target);
-        TextureBinding& to = d.textures.binding(target);
-        to.name = from.name;
-        to.object = from.name ? from.object : to.default_object;
+    d.textures.active = s.textures.active;
+    for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // every texture unit's (GL 1.3)
+      TextureUnitState& to = d.textures.units[u];
+      const TextureUnitState& from = s.textures.units[u];
+      to.enabled_1d = from.enabled_1d, to.enabled_2d = from.enabled_2d, to.enabled_3d = from.enabled_3d;
+      to.env_mode = from.env_mode, to.env_color = from.env_color, to.lod_bias = from.lod_bias;
+      to.gen = from.gen;
+      if (d.textures.names != s.textures.names) continue;  // a binding means something only within a share group
+      for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D}) {
+        const TextureBinding& b = from.binding(target);
+        TextureBinding& t = to.binding(target);
+        t.name = b.name;
+        t.object = b.name ? b.object : t.default_object;
       }
     }
   }

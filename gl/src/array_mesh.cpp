@@ -39,13 +39,19 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   // vertices are transformed and lit once; unused ones in between cost a little).
   if (count == 0 || hi >= UINT32_MAX || hi - lo > 4 * count + 1024) return false;  // sparse: vertex by vertex
   std::size_t n = std::size_t(hi - lo) + 1;
-  const Texture* texture = active_texture(c);
+  // The texture units that apply a texture (GL 1.3): their coordinates are loaded.
+  const unsigned textured = p.textured;
+  auto has = [&](std::size_t u) { return (textured >> u & 1u) != 0; };
   // Object-space attributes of the range, then eye space in place.
   m.positions.resize(n);
   m.normals.resize(n);
   m.colors.resize(l.enabled ? 0 : n);  // lit: colours come from the lighting
-  m.texcoords.resize(texture ? n : 0);
-  m.raw_texcoords.resize(texture ? n : 0);
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    m.texcoords[u].resize(has(u) ? n : 0);
+    m.raw_texcoords[u].resize(has(u) ? n : 0);
+  }
+  bool other_units = false;  // units past 0 (the ExtraLoader's)
+  for (std::size_t u = 1; u < kMaxTextureUnits; ++u) other_units = other_units || has(u);
   m.finite.resize(n);
   // GL 1.4: the secondary colours the colour sum adds to unlit colours (GL_COLOR_SUM).
   const bool sum = !l.enabled && c.fog.color_sum;
@@ -64,17 +70,23 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   const bool small_projection = bounded(&projection[0][0], 16);
   in_parallel(n, [&](std::size_t begin, std::size_t end) {
     load(lo + begin, end - begin, &m.positions[begin], &m.normals[begin], l.enabled ? nullptr : &m.colors[begin],
-         texture ? &m.raw_texcoords[begin] : nullptr);
-    if (sum || fog_coords) {
-      const ExtraOutputs out{sum ? &m.secondary[begin] : nullptr, fog_coords ? &m.fog[begin] : nullptr};
+         has(0) ? &m.raw_texcoords[0][begin] : nullptr);
+    if (sum || fog_coords || other_units) {
+      ExtraOutputs out{sum ? &m.secondary[begin] : nullptr, fog_coords ? &m.fog[begin] : nullptr};
+      for (std::size_t u = 1; u < kMaxTextureUnits; ++u) out.texcoords[u] = has(u) ? &m.raw_texcoords[u][begin] : nullptr;
       if (extra) (*extra)(lo + begin, end - begin, out);
       if (!extra && sum) std::fill_n(out.secondary, end - begin, glm::vec3(c.current.secondary));
       if (!extra && fog_coords) std::fill_n(out.fog, end - begin, c.current.fog_coord);
+      for (std::size_t u = 1; !extra && u < kMaxTextureUnits; ++u) {
+        if (out.texcoords[u]) std::fill_n(out.texcoords[u], end - begin, c.current.texcoords[u]);
+      }
     }
     for (std::size_t v = begin; v < end; ++v) {
       glm::vec4 eye = transform(p.modelview, m.positions[v]);
       if (eye.w != 1.0f) homogeneous = true;
-      if (texture) m.raw_texcoords[v] = source_texcoord(c, m.raw_texcoords[v], m.positions[v], eye, m.normals[v]);
+      for (std::size_t u = 0; textured >> u; ++u) {
+        if (has(u)) m.raw_texcoords[u][v] = source_texcoord(c, u, m.raw_texcoords[u][v], m.positions[v], eye, m.normals[v]);
+      }
       m.positions[v] = eye;
       m.finite[v] = finite_clip(projection, small_projection, eye);
       if (!m.finite[v]) nonfinite = true;
@@ -83,7 +95,9 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
       if (sum) m.secondary[v] = glm::clamp(sanitize(m.secondary[v]), glm::vec3(0.0f), glm::vec3(1.0f));
       // Mesa's fixed-function vertex program passes the coordinate's absolute value on.
       if (fog_coords) m.fog[v] = std::fabs(m.fog[v]);
-      if (texture) m.texcoords[v] = texcoord(c, m.raw_texcoords[v]);
+      for (std::size_t u = 0; textured >> u; ++u) {
+        if (has(u)) m.texcoords[u][v] = texcoord(c, u, m.raw_texcoords[u][v]);
+      }
     }
   });
   // The pipeline lights at xyz, glBegin/glEnd's path at xyz / w: vertices with w != 1 go
@@ -155,7 +169,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.positions = m.positions;
   in.normals = m.normals;
   in.colors = m.colors;
-  in.texcoords = m.texcoords;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) in.texcoords[u] = m.texcoords[u];
   in.secondary_colors = m.secondary;
   in.fog_coords = m.fog;
   in.triangles = triangles;

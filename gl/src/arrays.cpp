@@ -165,6 +165,12 @@ void load_extra(const GlContext& c, std::size_t first, std::size_t n, const Extr
   for (std::size_t v = 0; out.fog && v < n; ++v) {
     out.fog[v] = usable(a.fog_coord) ? component(a.fog_coord, first + v, 0, Norm::kDirect) : c.current.fog_coord;
   }
+  for (std::size_t u = 1; u < kMaxTextureUnits; ++u) {
+    const ClientArray& t = a.texcoords[u];
+    for (std::size_t v = 0; out.texcoords[u] && v < n; ++v) {
+      out.texcoords[u][v] = usable(t) ? fetch(t, first + v, glm::vec4(0, 0, 0, 1), Norm::kDirect) : c.current.texcoords[u];
+    }
+  }
 }
 
 // glArrayElement's effect (GL 1.1 section 2.8): attributes first, the vertex last. `norm`:
@@ -178,7 +184,9 @@ void array_element(GlContext& c, std::size_t i, Norm norm) {
     c.current.color = fetch(a.color, i, glm::vec4(0, 0, 0, 1), norm);
     apply_color_material(c);
   }
-  if (usable(a.texcoord)) c.current.texcoord = fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect);
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // every unit's array (GL 1.3 section 2.8)
+    if (usable(a.texcoords[u])) c.current.texcoords[u] = fetch(a.texcoords[u], i, glm::vec4(0, 0, 0, 1), Norm::kDirect);
+  }
   if (usable(a.secondary_color)) c.current.secondary = secondary_element(a.secondary_color, i, norm);
   if (usable(a.fog_coord)) c.current.fog_coord = component(a.fog_coord, i, 0, Norm::kDirect);
   if (usable(a.vertex) && c.prim.active) emit_vertex(c, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect));
@@ -216,7 +224,8 @@ void draw_elements(GlContext& c, GLenum mode, std::size_t count, IndexOf index_o
     }
     if (!texcoords) return;
     for (std::size_t v = 0; v < n; ++v) {
-      texcoords[v] = usable(a.texcoord) ? fetch(a.texcoord, first + v, glm::vec4(0, 0, 0, 1), Norm::kDirect) : now.texcoord;
+      texcoords[v] =
+          usable(a.texcoords[0]) ? fetch(a.texcoords[0], first + v, glm::vec4(0, 0, 0, 1), Norm::kDirect) : now.texcoords[0];
     }
   };
   auto& sequence = c.array_scratch.sequence;
@@ -333,7 +342,8 @@ void set_pointer(GlContext& c, ClientArray& a, GLint size, GLenum type, GLsizei 
 // and normals converted as `norm` says (as the command being recorded converts them).
 void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, const auto& index_of) {
   const ClientArrays& a = c.arrays;
-  std::vector<float> normals, colors, texcoords, positions, edges, secondary, fog;
+  std::vector<float> normals, colors, positions, edges, secondary, fog;
+  std::array<std::vector<float>, kMaxTextureUnits> texcoords;
   auto put = [](std::vector<float>& out, const glm::vec4& v, int n) {
     for (int k = 0; k < n; ++k) out.push_back(v[k]);
   };
@@ -341,7 +351,9 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
     const std::size_t i = index_of(k);
     if (usable(a.normal)) put(normals, fetch(a.normal, i, glm::vec4(0.0f), norm), 3);
     if (usable(a.color)) put(colors, fetch(a.color, i, glm::vec4(0, 0, 0, 1), norm), 4);
-    if (usable(a.texcoord)) put(texcoords, fetch(a.texcoord, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
+    for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+      if (usable(a.texcoords[u])) put(texcoords[u], fetch(a.texcoords[u], i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
+    }
     if (usable(a.vertex)) put(positions, fetch(a.vertex, i, glm::vec4(0, 0, 0, 1), Norm::kDirect), 4);
     if (usable(a.edge_flag)) edges.push_back(component(a.edge_flag, i, 0, Norm::kDirect));
     if (usable(a.secondary_color)) put(secondary, secondary_element(a.secondary_color, i, norm), 3);
@@ -350,11 +362,14 @@ void write_elements(GlContext& c, ListWriter& w, std::size_t count, Norm norm, c
   w.scalar(std::uint64_t(count));
   w.array(usable(a.normal) ? normals.data() : nullptr, normals.size());
   w.array(usable(a.color) ? colors.data() : nullptr, colors.size());
-  w.array(usable(a.texcoord) ? texcoords.data() : nullptr, texcoords.size());
+  w.array(usable(a.texcoords[0]) ? texcoords[0].data() : nullptr, texcoords[0].size());
   w.array(usable(a.vertex) ? positions.data() : nullptr, positions.size());
   w.array(usable(a.edge_flag) ? edges.data() : nullptr, edges.size());
   w.array(usable(a.secondary_color) ? secondary.data() : nullptr, secondary.size());
   w.array(usable(a.fog_coord) ? fog.data() : nullptr, fog.size());
+  for (std::size_t u = 1; u < kMaxTextureUnits; ++u) {  // GL 1.3: the other units', after the rest
+    w.array(usable(a.texcoords[u]) ? texcoords[u].data() : nullptr, texcoords[u].size());
+  }
 }
 
 // A draw in a display list: its mode and elements. Drawn only if the vertex array is enabled,
@@ -382,9 +397,10 @@ void specify(GlContext& c, const RecordedElements& e, std::uint64_t k) {
     c.current.color = glm::vec4(e.colors[4 * k], e.colors[4 * k + 1], e.colors[4 * k + 2], e.colors[4 * k + 3]);
     apply_color_material(c);
   }
-  if (e.texcoords) {
-    const float* t = &e.texcoords[4 * k];
-    c.current.texcoord = glm::vec4(t[0], t[1], t[2], t[3]);
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    if (!e.unit_texcoords[u]) continue;
+    const float* t = &e.unit_texcoords[u][4 * k];
+    c.current.texcoords[u] = glm::vec4(t[0], t[1], t[2], t[3]);
   }
   if (e.edges) c.current.edge_flag = e.edges[k];
   if (e.secondary) c.current.secondary = glm::vec4(e.secondary[3 * k], e.secondary[3 * k + 1], e.secondary[3 * k + 2], 1.0f);
@@ -508,7 +524,7 @@ void exec::ColorPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, c
 }
 
 void exec::TexCoordPointer(GlContext& c, GLint size, GLenum type, GLsizei stride, const void* ptr) {
-  set_pointer(c, c.arrays.texcoord, size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
+  set_pointer(c, c.arrays.texcoord(), size, type, stride, ptr, 1, 4, {GL_SHORT, GL_INT, GL_FLOAT, GL_DOUBLE});
 }
 
 void exec::IndexPointer(GlContext& c, GLenum type, GLsizei stride, const void* ptr) {

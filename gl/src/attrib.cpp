@@ -70,9 +70,30 @@ void write_texture_parameters(GlContext& c, GLenum target, const std::array<floa
   }
 }
 
+// A texture unit's capabilities (GL 1.3 section 2.7: glEnable addresses the active unit's).
+bool texture_unit_capability(GLenum cap) {
+  return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || cap == GL_TEXTURE_3D ||
+         (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
+}
+
+// Runs `f` with each texture unit active in turn, then the active unit as it was.
+template <class F>
+void for_each_unit(GlContext& c, F&& f) {
+  const std::size_t active = c.textures.active;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    c.textures.active = u;
+    f(u);
+  }
+  c.textures.active = active;
+}
+
 void save_enables(GlContext& c, AttribRecord& r) {
   auto save = [&](GLenum cap) {
-    if (const bool* flag = capability_flag(c, cap)) r.enables.emplace_back(cap, *flag);
+    if (texture_unit_capability(cap)) {
+      for_each_unit(c, [&](std::size_t u) { r.enables.push_back({cap, u, *capability_flag(c, cap)}); });
+    } else if (const bool* flag = capability_flag(c, cap)) {
+      r.enables.push_back({cap, 0, *flag});
+    }
   };
   for (GLenum cap : kCapabilities) save(cap);
   for (int i = 0; i < kMaxLights; ++i) save(GLenum(GL_LIGHT0 + i));
@@ -84,9 +105,13 @@ void save_enables(GlContext& c, AttribRecord& r) {
 // `which` selects.
 template <class Which>
 void restore_enables(GlContext& c, const AttribRecord& r, const Which& which) {
-  for (const auto& [cap, on] : r.enables) {
-    if (which(cap) && *capability_flag(c, cap) != on) on ? exec::Enable(c, cap) : exec::Disable(c, cap);
+  const std::size_t active = c.textures.active;
+  for (const AttribRecord::Enable& e : r.enables) {
+    if (!which(e.cap)) continue;
+    c.textures.active = e.unit;
+    if (*capability_flag(c, e.cap) != e.on) e.on ? exec::Enable(c, e.cap) : exec::Disable(c, e.cap);
   }
+  c.textures.active = active;
 }
 
 // The texture group's bindings and object parameters (Mesa saves the default objects' too).
@@ -95,30 +120,34 @@ void save_textures(GlContext& c, AttribRecord& r) {
   const std::pair<GLenum, GLenum> targets[] = {{GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
                                                {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
                                                {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D}};
-  for (const std::pair<GLenum, GLenum>& tb : targets) {
-    // (Not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)
-    const GLenum target = tb.first, binding = tb.second;
-    AttribRecord::TextureTarget t;
-    t.target = target;
-    GLint name = 0;
-    if (!quietly(c, [&] { exec::GetIntegerv(c, binding, &name); })) continue;
-    t.name = GLuint(name);
-    quietly(c, [&] {
-      read_texture_parameters(c, target, t.bound);
-      t.defaults = t.bound;
-      if (t.name == 0) return;
-      exec::BindTexture(c, target, 0);
-      read_texture_parameters(c, target, t.defaults);
-      exec::BindTexture(c, target, t.name);
-    });
-    r.texture_targets.push_back(t);
-  }
+  for_each_unit(c, [&](std::size_t unit) {
+    for (const std::pair<GLenum, GLenum>& tb : targets) {
+      // (Not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)
+      const GLenum target = tb.first, binding = tb.second;
+      AttribRecord::TextureTarget t;
+      t.unit = unit;
+      t.target = target;
+      GLint name = 0;
+      if (!quietly(c, [&] { exec::GetIntegerv(c, binding, &name); })) continue;
+      t.name = GLuint(name);
+      quietly(c, [&] {
+        read_texture_parameters(c, target, t.bound);
+        t.defaults = t.bound;
+        if (t.name == 0) return;
+        exec::BindTexture(c, target, 0);
+        read_texture_parameters(c, target, t.defaults);
+        exec::BindTexture(c, target, t.name);
+      });
+      r.texture_targets.push_back(t);
+    }
+  });
 }
 
 // Binds the pushed names again (a name deleted since comes back as a new object, as
 // glBindTexture makes it) and gives the objects their pushed parameters.
 void restore_textures(GlContext& c, const AttribRecord& r) {
   for (const AttribRecord::TextureTarget& t : r.texture_targets) {
+    c.textures.active = t.unit;
     quietly(c, [&] {
       exec::BindTexture(c, t.target, 0);
       write_texture_parameters(c, t.target, t.defaults);
@@ -127,20 +156,23 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
       write_texture_parameters(c, t.target, t.bound);
     });
   }
-  c.textures.env_mode = r.textures.env_mode;
-  c.textures.env_color = r.textures.env_color;
-  c.textures.lod_bias = r.textures.lod_bias;
-  // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
-  // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
-  for (std::size_t i = 0; i < c.textures.gen.size(); ++i) {
-    c.textures.gen[i].mode = r.textures.gen[i].mode;
-    c.textures.gen[i].object_plane = r.textures.gen[i].object_plane;
-    c.textures.gen[i].eye_plane = r.textures.gen[i].eye_plane;
+  // GL_ACTIVE_TEXTURE is in the texture group (GL 1.3 table 6.19).
+  c.textures.active = r.textures.active;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    TextureUnitState& d = c.textures.units[u];
+    const TextureUnitState& s = r.textures.units[u];
+    d.env_mode = s.env_mode;
+    d.env_color = s.env_color;
+    d.lod_bias = s.lod_bias;
+    // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
+    // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
+    for (std::size_t i = 0; i < d.gen.size(); ++i) {
+      d.gen[i].mode = s.gen[i].mode;
+      d.gen[i].object_plane = s.gen[i].object_plane;
+      d.gen[i].eye_plane = s.gen[i].eye_plane;
+    }
   }
-  restore_enables(c, r, [](GLenum cap) {
-    return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || cap == GL_TEXTURE_3D ||
-           (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
-  });
+  restore_enables(c, r, texture_unit_capability);
 }
 
 // GL_COLOR_BUFFER_BIT (table 6.19's "color-buffer" rows).

@@ -45,7 +45,7 @@ void draw_bitmap(GlContext& c, GLsizei width, GLsizei height, GLfloat xorig, GLf
   rect.colors = std::span<const glm::vec4>(&color, 1);
   rect.depth = r.window.z;
   rect.mask = mask;
-  rect.texcoord = r.texcoord;  // s / q and t / q are taken per fragment by the core
+  rect.texcoords = r.texcoords;  // s / q and t / q are taken per fragment by the core
   rect.fog_coord = r.distance;  // section 3.7: the raster position's (Mesa takes 0)
   make_pipeline(c);
   draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, query_counts(c), c.pipeline.get());

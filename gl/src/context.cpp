@@ -15,20 +15,25 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
     lighting.lights[std::size_t(i)].enabled = false;  // every GL_LIGHTi starts disabled
   }
   // GL's default back material equals the front one; both are Material's defaults.
-  // Each target's default texture (name 0), with the target's dimensions.
+  // Each target's default texture (name 0), with the target's dimensions: one object the
+  // texture units share.
   for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D}) {
-    TextureBinding& b = textures.binding(target);
-    b.default_object = std::make_shared<TextureObject>();
-    b.default_object->target = target;
-    b.default_object->texture.dimensions = texture_dimensions(target);
-    b.object = b.default_object;
+    auto object = std::make_shared<TextureObject>();
+    object->target = target;
+    object->texture.dimensions = texture_dimensions(target);
+    for (TextureUnitState& unit : textures.units) {
+      TextureBinding& b = unit.binding(target);
+      b.default_object = b.object = object;
+    }
   }
   textures.names = share ? share->textures.names : std::make_shared<TextureNames>();
   lists.names = share ? share->lists.names : std::make_shared<ListNames>();
   buffer_names = share ? share->buffer_names : std::make_shared<BufferNames>();
   // glTexGen's initial planes: s = x, t = y, r = q = 0 (GL 1.1 section 2.10.4).
-  textures.gen[0].object_plane = textures.gen[0].eye_plane = glm::vec4(1, 0, 0, 0);
-  textures.gen[1].object_plane = textures.gen[1].eye_plane = glm::vec4(0, 1, 0, 0);
+  for (TextureUnitState& unit : textures.units) {
+    unit.gen[0].object_plane = unit.gen[0].eye_plane = glm::vec4(1, 0, 0, 0);
+    unit.gen[1].object_plane = unit.gen[1].eye_plane = glm::vec4(0, 1, 0, 0);
+  }
   const char* reference = std::getenv("SHADELAB_REFERENCE");
   use_reference = reference && *reference && std::string_view(reference) != "0";
   if (const char* stats = std::getenv("SHADELAB_STATS")) stats_path = stats;
@@ -53,7 +58,7 @@ GlContext::~GlContext() {
 MatrixStack& GlContext::current_stack() {
   switch (matrix_mode) {
     case GL_PROJECTION: return projection;
-    case GL_TEXTURE: return texture_matrix;
+    case GL_TEXTURE: return texture_matrix();
     default: return modelview;
   }
 }

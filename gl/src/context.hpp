@@ -75,11 +75,19 @@ struct LightingState {
   GLenum shade_model = GL_SMOOTH;
 };
 
+/// (0, 0, 0, 1) for every texture unit.
+constexpr std::array<glm::vec4, kMaxTextureUnits> initial_texcoords() {
+  std::array<glm::vec4, kMaxTextureUnits> t;
+  for (glm::vec4& v : t) v = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+  return t;
+}
+
 /// The current vertex attributes (GL 1.1 section 2.7), in object space.
 struct CurrentAttribs {
   glm::vec4 color{1.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
-  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
+  // Per texture unit (GL 1.3 section 2.7): glTexCoord sets unit 0's, glMultiTexCoord any.
+  std::array<glm::vec4, kMaxTextureUnits> texcoords = initial_texcoords();
   float index = 1.0f;      // GL_CURRENT_INDEX: kept, colours nothing in an RGBA context
   float edge_flag = 1.0f;  // GL_EDGE_FLAG as given (GL_TRUE only when exactly 1, as Mesa's)
   // GL 1.4 section 2.7: GL_CURRENT_SECONDARY_COLOR (glSecondaryColor3* sets red, green and
@@ -223,7 +231,13 @@ struct ClientArrays {
     a.size = size, a.type = type;
     return a;
   }
-  ClientArray vertex, normal = initial(3), color, texcoord;
+  ClientArray vertex, normal = initial(3), color;
+  // Per texture unit (GL 1.3 section 2.8): glTexCoordPointer and GL_TEXTURE_COORD_ARRAY address
+  // the client active unit's (glClientActiveTexture).
+  std::array<ClientArray, kMaxTextureUnits> texcoords;
+  std::size_t client_active = 0;
+  ClientArray& texcoord() { return texcoords[client_active]; }
+  const ClientArray& texcoord() const { return texcoords[client_active]; }
   ClientArray secondary_color = initial(3), fog_coord = initial(1);  // GL 1.4 section 2.8
   ClientArray index = initial(1);                        // colour indices: current index only
   ClientArray edge_flag = initial(1, GL_UNSIGNED_BYTE);  // GLboolean elements
@@ -231,8 +245,10 @@ struct ClientArrays {
   std::shared_ptr<BufferObject> array_buffer, element_buffer;
   GLuint array_buffer_name = 0, element_buffer_name = 0;
   /// Every array, for what applies to all of them (buffers read in place, deleted buffers).
-  std::array<ClientArray*, 8> all() {
-    return {&vertex, &normal, &color, &texcoord, &secondary_color, &fog_coord, &index, &edge_flag};
+  std::array<ClientArray*, 7 + kMaxTextureUnits> all() {
+    static_assert(kMaxTextureUnits == 4);
+    return {&vertex,       &normal,       &color,           &texcoords[0], &texcoords[1], &texcoords[2],
+            &texcoords[3], &secondary_color, &fog_coord, &index,        &edge_flag};
   }
 };
 
@@ -281,9 +297,18 @@ struct AttribRecord {
   PrimState prims;
   FogSettings fog;
   TextureState textures;  // environment; the bindings are restored through exec::BindTexture
-  std::vector<std::pair<GLenum, bool>> enables;  // every accepted capability
-  // Per texture target: the bound name and the parameters of the bound and default objects.
+  // Every accepted capability; a texture unit's (GL_TEXTURE_2D, GL_TEXTURE_GEN_S...) once per
+  // unit.
+  struct Enable {
+    GLenum cap;
+    std::size_t unit;  // the texture unit active when it is restored
+    bool on;
+  };
+  std::vector<Enable> enables;
+  // Per texture unit and target: the bound name and the parameters of the bound and default
+  // objects.
   struct TextureTarget {
+    std::size_t unit = 0;
     GLenum target = 0;
     GLuint name = 0;
     std::array<float, 16> bound{}, defaults{};  // attrib.cpp's kTextureParameters
@@ -364,7 +389,13 @@ struct GlContext {
   GLenum matrix_mode = GL_MODELVIEW;
   MatrixStack modelview{{glm::mat4(1.0f)}, kMaxModelviewDepth};
   MatrixStack projection{{glm::mat4(1.0f)}, kMaxProjectionDepth};
-  MatrixStack texture_matrix{{glm::mat4(1.0f)}, kMaxTextureStackDepth};
+  // One texture matrix stack per texture unit (GL 1.3 section 2.10.2).
+  std::array<MatrixStack, kMaxTextureUnits> texture_matrices{
+      MatrixStack{{glm::mat4(1.0f)}, kMaxTextureStackDepth}, MatrixStack{{glm::mat4(1.0f)}, kMaxTextureStackDepth},
+      MatrixStack{{glm::mat4(1.0f)}, kMaxTextureStackDepth}, MatrixStack{{glm::mat4(1.0f)}, kMaxTextureStackDepth}};
+  /// The active texture unit's stack (what GL_TEXTURE mode and the queries address).
+  MatrixStack& texture_matrix() { return texture_matrices[textures.active]; }
+  const MatrixStack& texture_matrix() const { return texture_matrices[textures.active]; }
 
   Framebuffer fb;
   /// The fast pipeline's threads and buffers, made at the first draw and kept for the

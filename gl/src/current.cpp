@@ -1,5 +1,5 @@
 // The current vertex attributes (GL 1.1 section 2.7): glColor*, glNormal3*, glTexCoord*,
-// glIndex* and glEdgeFlag* in every type and size, GL 1.4's glSecondaryColor3* and glFogCoord*. Each
+// glIndex* and glEdgeFlag* in every type and size (glMultiTexCoord*: multitexture.cpp), GL 1.4's glSecondaryColor3* and glFogCoord*. Each
 // converts its arguments (table 2.6 for colours and normals) and records them in
 // GlContext::current; nothing is drawn here (a vertex takes them in draw.cpp's emit_vertex).
 #include <type_traits>
@@ -49,7 +49,7 @@ void normal_v(GlContext& c, const T* v) {
 
 // Texture coordinates convert directly; missing ones are t = 0, r = 0, q = 1 (section 2.7).
 void texcoord(GlContext& c, double s, double t, double r, double q) {
-  c.current.texcoord = glm::vec4(float(s), float(t), float(r), float(q));
+  c.current.texcoords[0] = glm::vec4(float(s), float(t), float(r), float(q));  // GL 1.3: unit 0's
 }
 
 template <class T>

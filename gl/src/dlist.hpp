@@ -4,6 +4,7 @@
 // gl/src/dlist.cpp implements glNewList ... glCallLists. Nothing here draws.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -118,6 +119,8 @@ struct RecordedElements {
   const float *normals, *colors, *texcoords, *positions, *edges;
   const float* secondary;  // GL 1.4: red, green and blue per element
   const float* fog;        // GL 1.4: the fog coordinate per element
+  // GL 1.3: per texture unit, 4 floats per element (unit 0's are `texcoords`).
+  std::array<const float*, kMaxTextureUnits> unit_texcoords{};
   explicit RecordedElements(ListReader& r)
       : count(r.scalar<std::uint64_t>()),
         normals(r.array<float>()),
@@ -126,7 +129,17 @@ struct RecordedElements {
         positions(r.array<float>()),
         edges(r.array<float>()),
         secondary(r.array<float>()),
-        fog(r.array<float>()) {}
+        fog(r.array<float>()) {
+    unit_texcoords[0] = texcoords;
+    for (std::size_t u = 1; u < kMaxTextureUnits; ++u) unit_texcoords[u] = r.array<float>();
+  }
+  /// Whether a texture unit other than 0 has coordinates (a compiled mesh keeps unit 0's only).
+  bool other_units() const {
+    for (std::size_t u = 1; u < kMaxTextureUnits; ++u) {
+      if (unit_texcoords[u]) return true;
+    }
+    return false;
+  }
 };
 
 /// While a command is compiled: runs its saver (out of memory becomes GL_OUT_OF_MEMORY) and

@@ -129,7 +129,7 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
       const RecordedElements e(r);
       // Edge flags, secondary colours, fog coordinates per vertex: a mesh keeps none (replayed
       // as recorded).
-      if (e.edges || e.secondary || e.fog) return 0;
+      if (e.edges || e.secondary || e.fog || e.other_units()) return 0;
       for (std::uint64_t k = 0; k < e.count; ++k) {
         if (e.normals && !s.set(AttributeKind::kNormal, glm::vec4(glm::make_vec3(&e.normals[3 * k]), 0.0f))) return 0;
         if (e.colors && !s.set(AttributeKind::kColor, glm::make_vec4(&e.colors[4 * k]))) return 0;
@@ -148,12 +148,13 @@ std::size_t begin_end_mesh(const DisplayList& list, std::size_t start, ListMesh&
 }
 
 // The mesh of an ArrayDraw command (the reader after its opcode); false when its elements
-// carry edge flags, secondary colours or fog coordinates, which a mesh does not keep (the command is then replayed as recorded).
+// carry edge flags, secondary colours, fog coordinates or texture coordinates of units past 0,
+// which a mesh does not keep (the command is then replayed as recorded).
 bool array_draw_mesh(ListReader& r, ListMesh& mesh) {
   mesh.mode = r.scalar<GLenum>();
   mesh.array_draw = true;
   const RecordedElements e(r);
-  if (e.edges || e.secondary || e.fog) return false;
+  if (e.edges || e.secondary || e.fog || e.other_units()) return false;
   MeshBuilder b(mesh);
   b.keep(e.normals != nullptr, e.colors != nullptr, e.texcoords != nullptr);
   for (std::uint64_t k = 0; k < e.count; ++k) {
@@ -171,7 +172,7 @@ void specify(GlContext& c, const ListMesh& m, std::uint32_t v) {
     c.current.color = m.colors[v];
     apply_color_material(c);
   }
-  if (!m.texcoords.empty()) c.current.texcoord = m.texcoords[v];
+  if (!m.texcoords.empty()) c.current.texcoords[0] = m.texcoords[v];
   if (c.prim.active) emit_vertex(c, m.positions[v]);
 }
 
@@ -182,7 +183,7 @@ void leave_current(GlContext& c, const ListMesh& m) {
     c.current.color = m.last_color;
     apply_color_material(c);
   }
-  if (m.sets_texcoord) c.current.texcoord = m.last_texcoord;
+  if (m.sets_texcoord) c.current.texcoords[0] = m.last_texcoord;
 }
 
 // The commands the mesh replaced, vertex by vertex.
@@ -214,7 +215,7 @@ bool draw_fast(GlContext& c, const ListMesh& m) {
     else std::copy_n(&m.normals[first], n, normals);
     if (colors && m.colors.empty()) std::fill_n(colors, n, now.color);
     else if (colors) std::copy_n(&m.colors[first], n, colors);
-    if (texcoords && m.texcoords.empty()) std::fill_n(texcoords, n, now.texcoord);
+    if (texcoords && m.texcoords.empty()) std::fill_n(texcoords, n, now.texcoords[0]);
     else if (texcoords) std::copy_n(&m.texcoords[first], n, texcoords);
   };
   const bool triangles = m.mode == GL_TRIANGLES;

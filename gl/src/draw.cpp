@@ -57,15 +57,15 @@ struct Batch {
   Batch(ImmediateScratch& scratch, std::size_t vertices) : s(scratch) {
     for (auto* v : {&s.positions, &s.colors, &s.back_colors}) v->resize(vertices);
     for (auto* v : {&s.normals, &s.secondary, &s.back_secondary}) v->resize(vertices);
-    s.texcoords.resize(vertices);
+    for (auto& t : s.texcoords) t.resize(vertices);
     s.fog.resize(vertices);
     s.triangles.clear();
   }
 
   // Only what the draw reads: normals when the pipeline lights, colours when lit here (or
-  // unlit), texture coordinates when textured.
-  void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors,
-           const glm::vec4* texcoord, const float* fog) {
+  // unlit), the texture coordinates of the units in `textured`.
+  void set(std::size_t i, const PrimitiveVertex& v, bool normals, const VertexColors* colors, const Primitive& p,
+           const float* fog) {
     s.positions[i] = v.eye;
     if (normals) s.normals[i] = v.normal;
     if (colors) {
@@ -74,18 +74,24 @@ struct Batch {
       s.secondary[i] = colors->front_secondary;
       s.back_secondary[i] = colors->back_secondary;
     }
-    if (texcoord) s.texcoords[i] = *texcoord;
+    for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+      if (p.textured >> u & 1u) s.texcoords[u][i] = p.texcoords[u][i];
+    }
     if (fog) s.fog[i] = *fog;
   }
 
-  std::uint32_t add(const PrimitiveVertex& v, const VertexColors& colors, const glm::vec4& texcoord, float fog) {
+  // Vertex `i` of `p` again, with `colors`.
+  std::uint32_t add(const Primitive& p, std::uint32_t i, const VertexColors& colors, float fog) {
+    const PrimitiveVertex& v = p.vertices[i];
     s.positions.push_back(v.eye);
     s.normals.push_back(v.normal);
     s.colors.push_back(colors.front);
     s.back_colors.push_back(colors.back);
     s.secondary.push_back(colors.front_secondary);
     s.back_secondary.push_back(colors.back_secondary);
-    s.texcoords.push_back(texcoord);
+    for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+      s.texcoords[u].push_back(p.texcoords[u].empty() ? glm::vec4(0, 0, 0, 1) : p.texcoords[u][i]);
+    }
     s.fog.push_back(fog);
     return std::uint32_t(s.positions.size() - 1);
   }
@@ -100,9 +106,8 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch&
   if (provoking_last(t, rotated)) return rotated;
   const std::uint32_t* v = t.v;
   const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
-  const glm::vec4 texcoord = prim.texcoords.empty() ? glm::vec4(0, 0, 0, 1) : prim.texcoords[v[2]];
   const float fog = prim.fog_coords.empty() ? 0.0f : prim.fog_coords[v[2]];  // never flat
-  return {v[0], v[1], batch.add(prim.vertices[v[2]], colors, texcoord, fog)};
+  return {v[0], v[1], batch.add(prim, v[2], colors, fog)};
 }
 
 // Marks the window-space bounds of the batch's vertices, widened by `margin` pixels (the whole
@@ -219,8 +224,7 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
     const PrimitiveVertex& v = p.vertices[i];
-    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p.textured ? &p.texcoords[i] : nullptr,
-              p.fog_coordinates ? &p.fog_coords[i] : nullptr);
+    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p, p.fog_coordinates ? &p.fog_coords[i] : nullptr);
     if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
@@ -281,7 +285,9 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   }
   // GL 1.4 section 3.9: unlit, the colour sum adds the vertices' secondary colours.
   if (!l.enabled && c.fog.color_sum) in.secondary_colors = batch.s.secondary;
-  if (shade.texture || p.textured) in.texcoords = batch.s.texcoords;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    if (p.textured >> u & 1u) in.texcoords[u] = batch.s.texcoords[u];
+  }
   if (p.fog_coordinates) in.fog_coords = batch.s.fog;
   in.stipple_counter = &p.stipple_counter;
   if (observe) {
@@ -317,7 +323,7 @@ void flush_part(GlContext& c) {
   p.continued = true;
   keep_ends(p.vertices, f.keep_first, f.keep_last);
   keep_ends(p.colors, f.keep_first, f.keep_last);
-  keep_ends(p.texcoords, f.keep_first, f.keep_last);
+  for (std::vector<glm::vec4>& t : p.texcoords) keep_ends(t, f.keep_first, f.keep_last);
   keep_ends(p.fog_coords, f.keep_first, f.keep_last);
   keep_ends(p.edges, f.keep_first, f.keep_last);
 }
@@ -330,7 +336,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.mode = mode;
   p.vertices.clear();
   p.colors.clear();
-  p.texcoords.clear();
+  for (std::vector<glm::vec4>& t : p.texcoords) t.clear();
   p.fog_coords.clear();
   p.fog_coordinates = c.fog.by_coordinates();
   p.odd_strip_start = false;
@@ -344,8 +350,10 @@ void begin_primitive(GlContext& c, GLenum mode) {
   glm::mat3 inv = glm::inverse(glm::mat3(p.modelview));
   p.normal_matrix = glm::transpose(inv);
   p.rescale = 1.0f / std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
-  p.texture_matrix = c.texture_matrix.top();
-  p.identity_texture_matrix = p.texture_matrix == glm::mat4(1.0f);
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    p.texture_matrix[u] = c.texture_matrices[u].top();
+    p.identity_texture_matrix[u] = p.texture_matrix[u] == glm::mat4(1.0f);
+  }
   p.lights.clear();
   if (c.lighting.enabled) {
     for (const Light& l : c.lighting.lights) {
@@ -357,7 +365,7 @@ void begin_primitive(GlContext& c, GLenum mode) {
   // (Flat shading may copy a vertex while drawing: its normals are transformed here.)
   p.object_normals = p.deferred_lighting && c.lighting.shade_model != GL_FLAT;
   // Feedback reports texture coordinates whether or not a texture applies (as Mesa's).
-  p.textured = active_texture(c) != nullptr || c.render_mode == GL_FEEDBACK;
+  p.textured = textured_units(c);
 }
 
 void settle_lighting(GlContext& c) {
@@ -382,8 +390,10 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   // than it was written, a store-forwarding stall per vertex (half of this function's time).
   PrimitiveVertex& v = p.vertices.emplace_back();
   v.eye = eye;
-  if (p.textured) {
-    p.texcoords.push_back(texcoord(c, source_texcoord(c, c.current.texcoord, object_position, eye, c.current.normal)));
+  for (std::size_t u = 0; p.textured >> u; ++u) {
+    if (!(p.textured >> u & 1u)) continue;
+    p.texcoords[u].push_back(
+        texcoord(c, u, source_texcoord(c, u, c.current.texcoords[u], object_position, eye, c.current.normal)));
   }
   // Mesa's fixed-function vertex program passes the fog coordinate's absolute value on.
   if (p.fog_coordinates) p.fog_coords.push_back(std::fabs(c.current.fog_coord));
@@ -399,7 +409,7 @@ void end_primitive(GlContext& c) {
     draw_vertices(c, std::uint32_t(p.vertices.size()), true);
   p.vertices.clear();
   p.colors.clear();
-  p.texcoords.clear();
+  for (std::vector<glm::vec4>& t : p.texcoords) t.clear();
   p.fog_coords.clear();
   p.active = false;
 }

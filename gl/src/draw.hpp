@@ -3,6 +3,7 @@
 // to the core's draw_triangles. It never rasterizes or shades pixels itself.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <functional>
 #include <type_traits>
@@ -56,9 +57,12 @@ class ElementLoader {
 struct ExtraOutputs {
   glm::vec3* secondary = nullptr;  ///< secondary colours, red, green and blue as given
   float* fog = nullptr;            ///< fog coordinates as given
+  /// Texture units 1 and up (GL 1.3): their texture coordinates as given (entry 0 unused: the
+  /// ElementLoader gives unit 0's).
+  std::array<glm::vec4*, kMaxTextureUnits> texcoords{};
 };
-/// Loads GL 1.4's attributes of array elements first .. first + n - 1 (from their arrays, or
-/// the current values where an array is disabled).
+/// Loads GL 1.3-1.4's attributes of array elements first .. first + n - 1 (from their arrays,
+/// or the current values where an array is disabled).
 using ExtraLoader = std::function<void(std::size_t first, std::size_t n, const ExtraOutputs& out)>;
 
 /// glDrawArrays / glDrawElements in one go when the material is the same at every vertex:

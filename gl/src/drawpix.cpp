@@ -114,7 +114,7 @@ void draw_fragments_of(GlContext& c, const PixelImage& img, const ZoomedSpan& xs
   rect.depth = r.window.z;
   rect.depths = depths;
   rect.mask = mask;
-  rect.texcoord = r.texcoord;  // s / q and t / q are taken per fragment by the core
+  rect.texcoords = r.texcoords;  // s / q and t / q are taken per fragment by the core
   rect.fog_coord = r.distance;  // section 3.6.4: the raster position's (Mesa takes 0)
   make_pipeline(c);
   draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, query_counts(c), c.pipeline.get());

@@ -192,7 +192,7 @@ void evaluated_vertex(GlContext& c, const std::array<bool, kEvalTargets>& enable
   if (const int t = texcoord_map(enabled); t >= 0) {
     float v[4] = {0, 0, 0, 1};
     eval(t, v);
-    c.current.texcoord = glm::vec4(v[0], v[1], v[2], v[3]);
+    c.current.texcoords[0] = glm::vec4(v[0], v[1], v[2], v[3]);  // unit 0's, as glTexCoord
   }
   if (c.prim.active) emit_vertex(c, position);
   c.current = saved;

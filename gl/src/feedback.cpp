@@ -118,7 +118,7 @@ void feedback_raster_position(GlContext& c, GLenum which) {
   const RasterPosition& r = c.raster_pos;
   if (c.render_mode != GL_FEEDBACK || !r.valid) return;
   token(c.feedback, GLfloat(which));
-  feedback_vertex(c.feedback, r.window, r.color, r.texcoord);
+  feedback_vertex(c.feedback, r.window, r.color, r.texcoords[0]);  // unit 0's (GL 1.3 section 5.3)
 }
 
 void select_raster_position(GlContext& c) {

@@ -79,9 +79,9 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_COLOR_ARRAY_SIZE: out = array_state(a.color, true); return true;
     case GL_COLOR_ARRAY_TYPE: out = ints({double(a.color.type)}); return true;
     case GL_COLOR_ARRAY_STRIDE: out = ints({double(a.color.stride)}); return true;
-    case GL_TEXTURE_COORD_ARRAY_SIZE: out = array_state(a.texcoord, true); return true;
-    case GL_TEXTURE_COORD_ARRAY_TYPE: out = ints({double(a.texcoord.type)}); return true;
-    case GL_TEXTURE_COORD_ARRAY_STRIDE: out = ints({double(a.texcoord.stride)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_SIZE: out = array_state(a.texcoord(), true); return true;
+    case GL_TEXTURE_COORD_ARRAY_TYPE: out = ints({double(a.texcoord().type)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_STRIDE: out = ints({double(a.texcoord().stride)}); return true;
     case GL_INDEX_ARRAY_TYPE: out = ints({double(a.index.type)}); return true;
     case GL_INDEX_ARRAY_STRIDE: out = ints({double(a.index.stride)}); return true;
     case GL_EDGE_FLAG_ARRAY_STRIDE: out = ints({double(a.edge_flag.stride)}); return true;
@@ -103,7 +103,7 @@ bool query_client(const GlContext& c, GLenum pname, Values& out) {
     case GL_NORMAL_ARRAY_BUFFER_BINDING: out = ints({double(a.normal.buffer_name)}); return true;
     case GL_COLOR_ARRAY_BUFFER_BINDING: out = ints({double(a.color.buffer_name)}); return true;
     case GL_INDEX_ARRAY_BUFFER_BINDING: out = ints({double(a.index.buffer_name)}); return true;
-    case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.texcoord.buffer_name)}); return true;
+    case GL_TEXTURE_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.texcoord().buffer_name)}); return true;
     case GL_EDGE_FLAG_ARRAY_BUFFER_BINDING: out = ints({double(a.edge_flag.buffer_name)}); return true;
     case GL_SECONDARY_COLOR_ARRAY_BUFFER_BINDING: out = ints({double(a.secondary_color.buffer_name)}); return true;
     case GL_FOG_COORD_ARRAY_BUFFER_BINDING: out = ints({double(a.fog_coord.buffer_name)}); return true;
@@ -127,21 +127,21 @@ bool query_transform_lighting(const GlContext& c, GLenum pname, Values& out) {
   switch (pname) {
     case GL_CURRENT_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.color), 4); return true;
     case GL_CURRENT_NORMAL: out = vec(Kind::kColor, glm::value_ptr(c.current.normal), 3); return true;
-    case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoord), 4); return true;
+    case GL_CURRENT_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(c.current.texcoords[c.textures.active]), 4); return true;
     case GL_CURRENT_INDEX: out = make(Kind::kFloat, {c.current.index}); return true;
     case GL_CURRENT_SECONDARY_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.current.secondary), 4); return true;
     case GL_CURRENT_FOG_COORD: out = make(Kind::kFloat, {c.current.fog_coord}); return true;
     case GL_EDGE_FLAG: out = make(Kind::kBool, {double(c.current.edge_flag == 1.0f)}); return true;
     case GL_MODELVIEW_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.modelview.top()), 16); return true;
     case GL_PROJECTION_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.projection.top()), 16); return true;
-    case GL_TEXTURE_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.texture_matrix.top()), 16); return true;
+    case GL_TEXTURE_MATRIX: out = vec(Kind::kFloat, glm::value_ptr(c.texture_matrix().top()), 16); return true;
     // GL 1.3: the same matrices row by row.
     case GL_TRANSPOSE_MODELVIEW_MATRIX: out = transposed(c.modelview.top()); return true;
     case GL_TRANSPOSE_PROJECTION_MATRIX: out = transposed(c.projection.top()); return true;
-    case GL_TRANSPOSE_TEXTURE_MATRIX: out = transposed(c.texture_matrix.top()); return true;
+    case GL_TRANSPOSE_TEXTURE_MATRIX: out = transposed(c.texture_matrix().top()); return true;
     case GL_MODELVIEW_STACK_DEPTH: out = ints({double(c.modelview.entries.size())}); return true;
     case GL_PROJECTION_STACK_DEPTH: out = ints({double(c.projection.entries.size())}); return true;
-    case GL_TEXTURE_STACK_DEPTH: out = ints({double(c.texture_matrix.entries.size())}); return true;
+    case GL_TEXTURE_STACK_DEPTH: out = ints({double(c.texture_matrix().entries.size())}); return true;
     case GL_ATTRIB_STACK_DEPTH: out = ints({double(c.attrib_stack.size())}); return true;
     case GL_CLIENT_ATTRIB_STACK_DEPTH: out = ints({double(c.client_attrib_stack.size())}); return true;
     case GL_MATRIX_MODE: out = ints({double(c.matrix_mode)}); return true;
@@ -203,9 +203,12 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_FOG_INDEX: out = make(Kind::kFloat, {c.fog.index}); return true;
     case GL_FOG_COLOR: out = vec(Kind::kColor, glm::value_ptr(c.fog.color), 4); return true;
     case GL_FOG_COORD_SRC: out = ints({double(c.fog.coord_source)}); return true;
-    case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.binding_1d.name)}); return true;
-    case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.binding_2d.name)}); return true;
-    case GL_TEXTURE_BINDING_3D: out = ints({double(c.textures.binding_3d.name)}); return true;
+    case GL_TEXTURE_BINDING_1D: out = ints({double(c.textures.unit().binding_1d.name)}); return true;
+    case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.unit().binding_2d.name)}); return true;
+    case GL_TEXTURE_BINDING_3D: out = ints({double(c.textures.unit().binding_3d.name)}); return true;
+    // GL 1.3 section 2.7 (table 6.19, 6.7): the active and client active units.
+    case GL_ACTIVE_TEXTURE: out = ints({double(GL_TEXTURE0 + c.textures.active)}); return true;
+    case GL_CLIENT_ACTIVE_TEXTURE: out = ints({double(GL_TEXTURE0 + c.arrays.client_active)}); return true;
     case GL_RED_BITS: case GL_GREEN_BITS: case GL_BLUE_BITS: case GL_ALPHA_BITS: out = ints({8}); return true;
     case GL_DEPTH_BITS: out = ints({double(c.depth_bits)}); return true;
     case GL_STENCIL_BITS: out = ints({double(c.stencil_bits)}); return true;
@@ -246,7 +249,7 @@ bool query_pixels(const GlContext& c, GLenum pname, Values& out) {
     case GL_CURRENT_RASTER_POSITION_VALID: out = make(Kind::kBool, {double(r.valid)}); return true;
     case GL_CURRENT_RASTER_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.color), 4); return true;
     case kCurrentRasterSecondaryColor: out = vec(Kind::kColor, glm::value_ptr(r.secondary), 4); return true;
-    case GL_CURRENT_RASTER_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(r.texcoord), 4); return true;
+    case GL_CURRENT_RASTER_TEXTURE_COORDS: out = vec(Kind::kFloat, glm::value_ptr(r.texcoords[c.textures.active]), 4); return true;
     case GL_CURRENT_RASTER_DISTANCE: out = make(Kind::kFloat, {r.distance}); return true;
     case GL_CURRENT_RASTER_INDEX: out = make(Kind::kFloat, {r.index}); return true;
     case GL_RED_SCALE: case GL_GREEN_SCALE: case GL_BLUE_SCALE: case GL_ALPHA_SCALE:
@@ -283,6 +286,7 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_MAX_ATTRIB_STACK_DEPTH: out = ints({kMaxAttribStackDepth}); return true;
     case GL_MAX_CLIENT_ATTRIB_STACK_DEPTH: out = ints({kMaxClientAttribStackDepth}); return true;
     case GL_MAX_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;
+    case GL_MAX_TEXTURE_UNITS: out = ints({kMaxTextureUnits}); return true;
     // GL 1.3: no specific compressed texture format (texcompress.cpp).
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: out = ints({0}); return true;
     case GL_COMPRESSED_TEXTURE_FORMATS: out = ints({}); return true;
@@ -416,7 +420,7 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
     case GL_NORMAL_ARRAY_POINTER: p = a.normal.pointer; break;
     case GL_COLOR_ARRAY_POINTER: p = a.color.pointer; break;
     case GL_INDEX_ARRAY_POINTER: p = a.index.pointer; break;
-    case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord.pointer; break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: p = a.texcoord().pointer; break;
     case GL_EDGE_FLAG_ARRAY_POINTER: p = a.edge_flag.pointer; break;
     case GL_SECONDARY_COLOR_ARRAY_POINTER: p = a.secondary_color.pointer; break;
     case GL_FOG_COORD_ARRAY_POINTER: p = a.fog_coord.pointer; break;

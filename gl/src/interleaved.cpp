@@ -63,8 +63,9 @@ void exec::InterleavedArrays(GlContext& c, GLenum format, GLsizei stride, const 
   a.index.enabled = false;
   a.secondary_color.enabled = false;  // GL 1.4 section 2.8
   a.fog_coord.enabled = false;
-  a.texcoord.enabled = l.texcoords > 0;
-  if (l.texcoords > 0) a.texcoord = {true, l.texcoords, GL_FLOAT, stride, pointer, buffer, name};
+  // The client active texture unit's array (GL 1.3 section 2.8).
+  a.texcoord().enabled = l.texcoords > 0;
+  if (l.texcoords > 0) a.texcoord() = {true, l.texcoords, GL_FLOAT, stride, pointer, buffer, name};
   a.color.enabled = l.colors > 0;
   if (l.colors > 0) a.color = {true, l.colors, l.color_type, stride, at(pointer, l.color_offset), buffer, name};
   a.normal.enabled = l.normals;

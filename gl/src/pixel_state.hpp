@@ -13,6 +13,8 @@
 
 #include <glm/vec4.hpp>
 
+#include "shadelab/texture.hpp"
+
 namespace shadelab::gl {
 
 /// GL_MAX_PIXEL_MAP_TABLE: the largest pixel map (Mesa's).
@@ -25,7 +27,9 @@ struct RasterPosition {
   bool valid = true;
   glm::vec4 color{1.0f};                        ///< lit (clamped) or the current colour (as given)
   glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};  ///< the separate specular colour when lit
-  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};   ///< after the texture matrix
+  /// Per texture unit, after the unit's texture matrix.
+  std::array<glm::vec4, kMaxTextureUnits> texcoords{glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f),
+                                                    glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
   float distance = 0.0f;                        ///< eye-space distance from the eye (fog)
   float index = 1.0f;                           ///< GL_CURRENT_RASTER_INDEX (colour index mode only)
 };

@@ -101,7 +101,9 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
                                                         : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
-  r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // GL 1.3: every unit's, through its matrix
+    r.texcoords[u] = transform(c.texture_matrices[u].top(), c.current.texcoords[u]);
+  }
   select_raster_position(c);
 }
 
@@ -126,7 +128,7 @@ void window_pos(GlContext& c, double x, double y, double z) {
   r.color = glm::clamp(c.current.color, glm::vec4(0.0f), glm::vec4(1.0f));
   r.secondary = glm::clamp(c.current.secondary, glm::vec4(0.0f), glm::vec4(1.0f));
   r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord : 0.0f;
-  r.texcoord = c.current.texcoord;
+  r.texcoords = c.current.texcoords;
   select_raster_position(c);
 }
 

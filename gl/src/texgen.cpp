@@ -33,7 +33,7 @@ void tex_gen(GlContext& c, GLenum coord, GLenum pname, const float* v) {
   const int i = coord_index(coord);
   if (i < 0) return c.set_error(GL_INVALID_ENUM);
   if (!v) return c.set_error(GL_INVALID_VALUE);
-  TexGenCoord& g = c.textures.gen[std::size_t(i)];
+  TexGenCoord& g = c.textures.unit().gen[std::size_t(i)];
   switch (pname) {
     case GL_TEXTURE_GEN_MODE: {
       const GLint mode = std::isfinite(v[0]) && std::fabs(v[0]) < 2e9f ? GLint(v[0]) : 0;
@@ -71,7 +71,7 @@ template <class T>
 void get_tex_gen(GlContext& c, GLenum coord, GLenum pname, T* params) {
   const int i = coord_index(coord);
   if (i < 0) return c.set_error(GL_INVALID_ENUM);
-  const TexGenCoord& g = c.textures.gen[std::size_t(i)];
+  const TexGenCoord& g = c.textures.unit().gen[std::size_t(i)];
   glm::vec4 v(0.0f);
   int n = 4;
   switch (pname) {
@@ -104,11 +104,11 @@ glm::vec2 sphere_map(const glm::vec4& eye, const glm::vec3& normal) {
 
 }  // namespace
 
-bool texgen_needs_normal(const TextureState& t) {
+bool texgen_needs_normal(const TextureUnitState& t) {
   return (t.gen[0].enabled && t.gen[0].mode == GL_SPHERE_MAP) || (t.gen[1].enabled && t.gen[1].mode == GL_SPHERE_MAP);
 }
 
-glm::vec4 generate_texcoords(const TextureState& t, glm::vec4 current, const glm::vec4& object, const glm::vec4& eye,
+glm::vec4 generate_texcoords(const TextureUnitState& t, glm::vec4 current, const glm::vec4& object, const glm::vec4& eye,
                              const glm::vec3& eye_normal) {
   glm::vec2 sphere(0.0f);
   if (texgen_needs_normal(t)) sphere = sphere_map(eye, eye_normal);

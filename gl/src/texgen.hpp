@@ -10,13 +10,13 @@
 namespace shadelab::gl {
 
 /// Whether an enabled coordinate uses GL_SPHERE_MAP (which reads the eye-space normal).
-bool texgen_needs_normal(const TextureState& t);
+bool texgen_needs_normal(const TextureUnitState& t);
 
 /// `current` with each enabled coordinate replaced by its generated value: object linear
 /// from the object-space position, eye linear from the eye-space one, sphere map (s, t) from
 /// the eye-space position and normal (the normal transformed, and normalized or rescaled as
 /// enabled; read only when texgen_needs_normal). The texture matrix applies afterwards.
-glm::vec4 generate_texcoords(const TextureState& t, glm::vec4 current, const glm::vec4& object, const glm::vec4& eye,
+glm::vec4 generate_texcoords(const TextureUnitState& t, glm::vec4 current, const glm::vec4& object, const glm::vec4& eye,
                              const glm::vec3& eye_normal);
 
 }  // namespace shadelab::gl

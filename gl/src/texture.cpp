@@ -146,17 +146,19 @@ void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
     if (!v) return c.set_error(GL_INVALID_VALUE);
-    c.textures.lod_bias = finite_or_zero(v[0]);
+    c.textures.unit().lod_bias = finite_or_zero(v[0]);
     return;
   }
   if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
   if (!v) return c.set_error(GL_INVALID_VALUE);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLint m = enum_param(v[0], false);
-    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE) return c.set_error(GL_INVALID_ENUM);
-    c.textures.env_mode = GLenum(m);
+    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE && m != GL_ADD) {
+      return c.set_error(GL_INVALID_ENUM);  // (GL_ADD: GL 1.3)
+    }
+    c.textures.unit().env_mode = GLenum(m);
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    for (int i = 0; i < 4; ++i) c.textures.env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
+    for (int i = 0; i < 4; ++i) c.textures.unit().env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
   } else {
     c.set_error(GL_INVALID_ENUM);
   }
@@ -166,15 +168,15 @@ void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
 // (section 6.1.2); Mesa 22 truncates it.
 template <class T>
 void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
-  float v[4] = {float(c.textures.env_mode), 0, 0, 0};
+  float v[4] = {float(c.textures.unit().env_mode), 0, 0, 0};
   int n = 1;
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
-    v[0] = c.textures.lod_bias;
+    v[0] = c.textures.unit().lod_bias;
   } else if (target != GL_TEXTURE_ENV) {
     return c.set_error(GL_INVALID_ENUM);
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    for (int i = 0; i < 4; ++i) v[i] = c.textures.env_color[i];
+    for (int i = 0; i < 4; ++i) v[i] = c.textures.unit().env_color[i];
     n = 4;
   } else if (pname != GL_TEXTURE_ENV_MODE) {
     return c.set_error(GL_INVALID_ENUM);
@@ -236,12 +238,13 @@ TextureEnvMode env_mode(GLenum mode) {
     case GL_REPLACE: return TextureEnvMode::kReplace;
     case GL_DECAL: return TextureEnvMode::kDecal;
     case GL_BLEND: return TextureEnvMode::kBlend;
+    case GL_ADD: return TextureEnvMode::kAdd;
     default: return TextureEnvMode::kModulate;
   }
 }
 
-const Texture* active_texture(GlContext& c, std::shared_ptr<const TextureObject>* object) {
-  TextureState& s = c.textures;
+const Texture* unit_texture(GlContext& c, std::size_t unit, std::shared_ptr<const TextureObject>* object) {
+  TextureUnitState& s = c.textures.units[unit];
   const Texture* t = nullptr;
   if (s.enabled_3d && s.binding_3d.object && (t = complete_texture(*s.binding_3d.object))) {
     if (object) *object = s.binding_3d.object;
@@ -259,19 +262,33 @@ const Texture* active_texture(GlContext& c, std::shared_ptr<const TextureObject>
 
 }  // namespace
 
-const Texture* active_texture(GlContext& c) { return active_texture(c, nullptr); }
+const Texture* unit_texture(GlContext& c, std::size_t unit) { return unit_texture(c, unit, nullptr); }
+
+unsigned textured_units(GlContext& c) {
+  unsigned bits = c.render_mode == GL_FEEDBACK ? 1u : 0u;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    if (unit_texture(c, u)) bits |= 1u << u;
+  }
+  return bits;
+}
 
 void texture_draw_state(GlContext& c, ShadeState& shade) {
-  std::shared_ptr<const TextureObject> object;
-  shade.texture = active_texture(c, &object);
-  shade.texture_env = env_mode(c.textures.env_mode);
-  shade.texture_env_color = c.textures.env_color;
-  shade.texture_lod_bias = c.textures.lod_bias;
-  if (!shade.texture) return;
-  shade.texture_kept = true;
   std::vector<std::shared_ptr<const TextureObject>>& kept = c.textures_of_waiting_draws;
-  if (!c.pipeline || c.pipeline->deferred_draws() == 0) kept.clear();
-  if (std::find(kept.begin(), kept.end(), object) == kept.end()) kept.push_back(std::move(object));
+  bool cleared = false;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    const TextureUnitState& s = c.textures.units[u];
+    TextureUnit& unit = shade.textures[u];
+    std::shared_ptr<const TextureObject> object;
+    unit.texture = unit_texture(c, u, &object);
+    unit.env = env_mode(s.env_mode);
+    unit.env_color = s.env_color;
+    unit.lod_bias = s.lod_bias;
+    if (!unit.texture) continue;
+    shade.texture_kept = true;
+    if (!cleared && (!c.pipeline || c.pipeline->deferred_draws() == 0)) kept.clear();
+    cleared = true;
+    if (std::find(kept.begin(), kept.end(), object) == kept.end()) kept.push_back(std::move(object));
+  }
 }
 
 void texture_changing(GlContext& c, const TextureObject& t) {
@@ -300,8 +317,10 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
   for (GLsizei i = 0; i < n; ++i) {
     if (textures[i] == 0) continue;
     c.textures.names->objects.erase(textures[i]);
-    for (TextureBinding* b : {&c.textures.binding_1d, &c.textures.binding_2d, &c.textures.binding_3d}) {
-      if (b->name == textures[i]) *b = {0, b->default_object, b->default_object};
+    for (TextureUnitState& u : c.textures.units) {
+      for (TextureBinding* b : {&u.binding_1d, &u.binding_2d, &u.binding_3d}) {
+        if (b->name == textures[i]) *b = {0, b->default_object, b->default_object};
+      }
     }
   }
 }

@@ -16,14 +16,19 @@ namespace shadelab::gl {
 /// object while name 0 is bound); nullptr for any other target.
 TextureObject* bound_texture(GlContext& c, GLenum target);
 
-/// The texture to apply (GL 1.5 section 3.8.15), or nullptr: GL_TEXTURE_3D when enabled and
-/// complete, else GL_TEXTURE_2D, else GL_TEXTURE_1D (an incomplete texture is as if
-/// its target were disabled, as in Mesa).
-const Texture* active_texture(GlContext& c);
+/// The texture texture unit `unit` applies (GL 1.5 section 3.8.15), or nullptr: GL_TEXTURE_3D
+/// when enabled and complete, else GL_TEXTURE_2D, else GL_TEXTURE_1D (an incomplete texture is
+/// as if its target were disabled, as in Mesa).
+const Texture* unit_texture(GlContext& c, std::size_t unit);
 
-/// Sets the texturing of a draw's `shade` (the active texture, its environment mode and
-/// colour) and marks its texture kept (ShadeState::texture_kept): the object stays alive
-/// while draws that read it wait, and texture_changing finishes them before it changes.
+/// The bits of the texture units that apply a texture (unit_texture), GL_FEEDBACK's unit 0
+/// too (feedback reports its coordinates whether or not a texture applies, as Mesa's): the
+/// units whose texture coordinates a draw carries.
+unsigned textured_units(GlContext& c);
+
+/// Sets the texturing of a draw's `shade` (each unit's texture, its environment mode and
+/// colour) and marks the textures kept (ShadeState::texture_kept): the objects stay alive
+/// while draws that read them wait, and texture_changing finishes them before they change.
 void texture_draw_state(GlContext& c, ShadeState& shade);
 
 /// Call before `t`'s texels or parameters change: the waiting draws that read it are drawn

@@ -1,7 +1,7 @@
 // The texture state of a context (GL 1.1 section 3.8, tables 6.15-6.16): texture objects by
 // name, shared between contexts that share them, each with its levels as glTexImage specified
-// them and in the core's form, the bindings of the 1D, 2D and 3D targets, the texture environment
-// and glTexGen's planes. Plain data; the commands are texture.cpp's, teximage.cpp's and their
+// them and in the core's form; per texture unit (GL 1.3), the bindings of the 1D, 2D and 3D
+// targets, the texture environment and glTexGen's planes. Plain data; the commands are texture.cpp's, teximage.cpp's and their
 // neighbours', and the pipeline samples the core's Texture.
 #pragma once
 
@@ -69,12 +69,12 @@ inline int texture_dimensions(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
 }
 
-struct TextureState {
+/// One texture unit (GL 1.3 section 2.7; table 6.19 ff.): its target enables and bindings,
+/// its environment and its coordinate generation. Its texture matrix stack and current
+/// texture coordinates are the context's (per unit there too).
+struct TextureUnitState {
   bool enabled_1d = false, enabled_2d = false, enabled_3d = false;  // GL_TEXTURE_1D, _2D, _3D
   TextureBinding binding_1d, binding_2d, binding_3d;
-  // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
-  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d;
-  std::shared_ptr<TextureNames> names;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
   float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
@@ -87,6 +87,21 @@ struct TextureState {
     return target == GL_TEXTURE_1D ? binding_1d : target == GL_TEXTURE_3D ? binding_3d : binding_2d;
   }
   bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
+};
+
+struct TextureState {
+  std::array<TextureUnitState, kMaxTextureUnits> units;
+  std::size_t active = 0;  // glActiveTexture's unit (GL_ACTIVE_TEXTURE - GL_TEXTURE0)
+  // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
+  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d;
+  std::shared_ptr<TextureNames> names;
+
+  /// The active unit, which glBindTexture, glTexEnv, glTexGen, glEnable of a texture target and
+  /// the texture queries address.
+  TextureUnitState& unit() { return units[active]; }
+  const TextureUnitState& unit() const { return units[active]; }
+  TextureBinding& binding(GLenum target) { return unit().binding(target); }
+  const TextureBinding& binding(GLenum target) const { return unit().binding(target); }
 };
 
 }  // namespace shadelab::gl

@@ -63,18 +63,19 @@ inline glm::vec3 sanitize(glm::vec3 v) {
   return c.lighting.rescale_normal ? n * p.rescale : n;
 }
 
-// (s, t, r, q) after the texture matrix; the pipeline divides by q per fragment.
-inline glm::vec4 texcoord(const GlContext& c, glm::vec4 tc) {
-  if (!c.prim.identity_texture_matrix) tc = c.prim.texture_matrix * tc;
+// (s, t, r, q) after texture unit `unit`'s texture matrix; the pipeline divides by q per
+// fragment.
+inline glm::vec4 texcoord(const GlContext& c, std::size_t unit, glm::vec4 tc) {
+  if (!c.prim.identity_texture_matrix[unit]) tc = c.prim.texture_matrix[unit] * tc;
   return tc;
 }
 
-// A vertex's texture coordinates before the texture matrix: `given`, or generated where
-// glTexGen is enabled (GL 1.1 section 2.10.4) from its object and eye positions and its
+// A vertex's texture coordinates for texture unit `unit` before its texture matrix: `given`,
+// or generated where the unit's glTexGen is enabled (GL 1.1 section 2.10.4) from its object and eye positions and its
 // object-space `normal` (transformed here when a sphere map reads it).
-inline glm::vec4 source_texcoord(const GlContext& c, const glm::vec4& given, const glm::vec4& object, const glm::vec4& eye,
-                                 const glm::vec3& normal) {
-  const TextureState& t = c.textures;
+inline glm::vec4 source_texcoord(const GlContext& c, std::size_t unit, const glm::vec4& given, const glm::vec4& object,
+                                 const glm::vec4& eye, const glm::vec3& normal) {
+  const TextureUnitState& t = c.textures.units[unit];
   if (!t.any_texgen()) return given;
   const glm::vec3 n = texgen_needs_normal(t) ? eye_normal(c, normal) : glm::vec3(0.0f);
   return generate_texcoords(t, given, object, eye, n);

@@ -7,6 +7,7 @@
 
 #include <GL/gl.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "gl/src/primitive.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
+#include "shadelab/texture.hpp"
 #include "shadelab/mesh.hpp"
 #include "shadelab/vertex_input.hpp"
 
@@ -44,9 +46,10 @@ struct Primitive {
   // The vertices' colours, one per vertex, unless lighting is deferred (then empty): records
   // of a lit primitive are less than half as large, to write in glVertex and read in glEnd.
   std::vector<VertexColors> colors;
-  // The vertices' texture coordinates (s, t, r, q) after generation and the texture matrix,
-  // one per vertex while `textured` (else empty); q divides per fragment.
-  std::vector<glm::vec4> texcoords;
+  // Per texture unit, the vertices' texture coordinates (s, t, r, q) after generation and the
+  // unit's texture matrix, one per vertex while the unit's bit is in `textured` (else empty);
+  // q divides per fragment.
+  std::array<std::vector<glm::vec4>, kMaxTextureUnits> texcoords;
   // The vertices' fog coordinates (their absolute values), one per vertex while fog uses them
   // (GL_FOG_COORDINATE source, fixed at glBegin), else empty.
   std::vector<float> fog_coords;
@@ -71,13 +74,15 @@ struct Primitive {
   // While lighting is deferred (smooth shading): normals kept as given and transformed to eye
   // space by draw_vertices, not by each glVertex call.
   bool object_normals = false;
-  bool textured = false;  // a texture applies, or GL_FEEDBACK reports them: texture coordinates are kept
+  // The units whose texture coordinates are kept (textured_units: a texture applies, or
+  // GL_FEEDBACK reports unit 0's).
+  unsigned textured = 0;
   // Fixed at glBegin:
   glm::mat4 modelview{1.0f};
   glm::mat3 normal_matrix{1.0f};
   float rescale = 1.0f;
-  bool identity_texture_matrix = true;
-  glm::mat4 texture_matrix{1.0f};
+  std::array<bool, kMaxTextureUnits> identity_texture_matrix{};
+  std::array<glm::mat4, kMaxTextureUnits> texture_matrix{};
   std::vector<Light> lights;  // enabled lights only
 };
 
@@ -88,8 +93,8 @@ struct Primitive {
 struct ArrayScratch {
   detail::ScratchVector<glm::vec4> positions, colors;
   detail::ScratchVector<glm::vec3> normals;
-  detail::ScratchVector<glm::vec4> texcoords;      // (s, t, r, q) after the texture matrix
-  detail::ScratchVector<glm::vec4> raw_texcoords;  // before the texture matrix
+  // Per texture unit: (s, t, r, q) after the unit's texture matrix, and before it.
+  std::array<detail::ScratchVector<glm::vec4>, kMaxTextureUnits> texcoords, raw_texcoords;
   detail::ScratchVector<glm::vec3> secondary;      // GL_COLOR_SUM unlit: clamped secondary colours
   detail::ScratchVector<float> fog;                // GL_FOG_COORDINATE fog: |fog coordinate|
   detail::ScratchVector<std::uint32_t> sequence;  // the draw's k-th element - the smallest element
@@ -105,7 +110,7 @@ struct ImmediateScratch {
   // Every element is written after each resize (Batch::set): growing costs no zeroing.
   detail::ScratchVector<glm::vec4> positions, colors, back_colors;
   detail::ScratchVector<glm::vec3> normals, secondary, back_secondary;
-  detail::ScratchVector<glm::vec4> texcoords;
+  std::array<detail::ScratchVector<glm::vec4>, kMaxTextureUnits> texcoords;  // per texture unit
   detail::ScratchVector<float> fog;
   std::vector<Triangle> triangles;
   std::vector<PrimitiveTriangle> pieces;

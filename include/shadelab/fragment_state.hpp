@@ -48,7 +48,7 @@ struct FragmentCapture {
 struct ObservedVertex {
   glm::vec4 window;    ///< GL window x, y (y up), depth z in [0, 1], and the clip-space w
   glm::vec4 color;     ///< its colour, of the face the primitive shows (two-sided lighting)
-  glm::vec4 texcoord;  ///< (s, t, r, q), not divided by q
+  glm::vec4 texcoord;  ///< texture unit 0's (s, t, r, q), not divided by q (GL 1.3 section 5.3)
 };
 
 /// GL's feedback and selection modes (GL 1.1 sections 5.2, 5.3): what a draw would rasterize,

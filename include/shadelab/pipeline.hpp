@@ -50,13 +50,19 @@ struct FragmentRect {
   float depth = 0.0f;                ///< window depth of every fragment (the raster position's)
   std::span<const float> depths;     ///< or one per fragment (glDrawPixels of depth values)
   std::span<const std::uint8_t> mask;  ///< empty, or width * height: 0 makes no fragment (glBitmap)
-  /// (s, t, r, q) of every fragment (the raster position's), for texturing (s / q, t / q).
-  glm::vec4 texcoord{0.0f, 0.0f, 0.0f, 1.0f};
+  /// (s, t, r, q) of every fragment for each texture unit (the raster position's), for
+  /// texturing (s / q, t / q).
+  std::array<glm::vec4, kMaxTextureUnits> texcoords = filled_texcoords();
+  static constexpr std::array<glm::vec4, kMaxTextureUnits> filled_texcoords() {
+    std::array<glm::vec4, kMaxTextureUnits> t;
+    for (glm::vec4& v : t) v = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    return t;
+  }
   float fog_coord = 0.0f;    ///< the raster position's fog coordinate
 };
 
 /// Runs GL's per-fragment operations on the fragments of `rect`, as on a primitive's: their
-/// colours textured with `shade`'s texture at `texcoord` (its magnification filter: the
+/// colours textured with `shade`'s texture units at `texcoords` (their magnification filter: the
 /// coordinates do not change across the rectangle) and fogged with `shade.fog` at `fog_coord`
 /// (lighting and shading are not used), then `fragment`'s scissor, alpha test, stencil and
 /// depth tests, blending or logic op and colour mask. Fragments outside the framebuffer are

@@ -4,6 +4,7 @@
 // does the lighting, texturing and fogging.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -52,6 +53,17 @@ struct FogState {
   float start = 0.0f, end = 1.0f, density = 1.0f;
 };
 
+/// One texture unit of a draw (GL 1.3 section 3.8.13): the texture it samples (null: the unit
+/// is off and passes its colour on) and its environment.
+struct TextureUnit {
+  const Texture* texture = nullptr;
+  TextureEnvMode env = TextureEnvMode::kModulate;
+  glm::vec4 env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend, in [0, 1]
+  /// The unit's GL_TEXTURE_LOD_BIAS (GL 1.4, glTexEnv GL_TEXTURE_FILTER_CONTROL), added to the
+  /// texture's own (texture_lod).
+  float lod_bias = 0.0f;
+};
+
 /// How colours are made. With `lighting` the pipeline lights vertices or pixels (by `shading`)
 /// with the one lighting function; without it, vertex colours are used as given.
 struct ShadeState {
@@ -61,18 +73,28 @@ struct ShadeState {
   std::span<const Light> lights;  ///< eye space
   Material front;
   Material back;  ///< used for back faces when model.two_side
-  /// Texturing: when set (and complete), fragments are textured with `texture_env`, before the
-  /// secondary colour is added. Needs texcoords in the vertex input.
-  const Texture* texture = nullptr;
-  TextureEnvMode texture_env = TextureEnvMode::kModulate;
-  glm::vec4 texture_env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend, in [0, 1]
-  /// The texture unit's GL_TEXTURE_LOD_BIAS (GL 1.4, glTexEnv GL_TEXTURE_FILTER_CONTROL),
-  /// added to the texture's own (texture_lod).
-  float texture_lod_bias = 0.0f;
-  /// The caller keeps `*texture` alive and unchanged until the context's finish_draws (the GL
-  /// library finishes the waiting draws before it changes a texture and keeps the textures of
-  /// waiting draws alive): a textured draw may then wait (PipelineContext::set_deferred).
+  /// Texturing: each unit whose texture is set (and complete) textures the fragments with its
+  /// environment, unit 0 first, before the secondary colour is added. Unit u samples at
+  /// VertexInput::texcoords[u].
+  std::array<TextureUnit, kMaxTextureUnits> textures;
+  /// The caller keeps the units' textures alive and unchanged until the context's
+  /// finish_draws (the GL library finishes the waiting draws before it changes a texture and
+  /// keeps the textures of waiting draws alive): a textured draw may then wait
+  /// (PipelineContext::set_deferred).
   bool texture_kept = false;
+  /// Whether any unit has a texture.
+  bool textured() const {
+    for (const TextureUnit& u : textures) {
+      if (u.texture) return true;
+    }
+    return false;
+  }
+  /// Units whose texture is incomplete (GL 1.5 section 3.8.10) set off, as if disabled.
+  void drop_incomplete_textures() {
+    for (TextureUnit& u : textures) {
+      if (u.texture && !u.texture->complete()) u.texture = nullptr;
+    }
+  }
   /// Shadow maps by light index (empty, or as long as `lights`; size 0 = unshadowed light).
   std::span<const ShadowMap> shadow_maps;
   /// Fog, applied after texturing and the colour sum.

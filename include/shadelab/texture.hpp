@@ -21,8 +21,13 @@ enum class TextureFilter {
   kNearest, kLinear,
   kNearestMipmapNearest, kLinearMipmapNearest, kNearestMipmapLinear, kLinearMipmapLinear,
 };
-/// glTexEnv GL_TEXTURE_ENV_MODE (GL 1.1 table 3.22).
-enum class TextureEnvMode { kModulate, kReplace, kDecal, kBlend };
+/// glTexEnv GL_TEXTURE_ENV_MODE (GL 1.1 table 3.22; GL_ADD: GL 1.3 table 3.23).
+enum class TextureEnvMode { kModulate, kReplace, kDecal, kBlend, kAdd };
+
+/// Texture units (GL 1.3 section 2.7): each has its own texture coordinates, texture and
+/// environment; the units apply in order, each to the previous unit's colour. llvmpipe's
+/// GL_MAX_TEXTURE_UNITS is 8; shadelab has 4 (GL 1.3's minimum is 2).
+inline constexpr int kMaxTextureUnits = 4;
 /// The base internal format, which decides how the environment combines (table 3.22).
 /// Texels are stored expanded to RGBA: luminance L as (L, L, L, 1), luminance-alpha as
 /// (L, L, L, A), intensity I as (I, I, I, I), alpha A as (0, 0, 0, A), RGB with alpha 1.

@@ -3,6 +3,7 @@
 // nothing here owns, copies or transforms them.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 
@@ -10,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "shadelab/mesh.hpp"
+#include "shadelab/texture.hpp"
 
 namespace shadelab {
 
@@ -46,10 +48,10 @@ struct VertexInput {
   std::span<const glm::vec4> back_colors;
   std::span<const glm::vec3> secondary_colors;
   std::span<const glm::vec3> back_secondary_colors;
-  /// (s, t, r, q) per vertex, for texturing: s / q and t / q index the texture, divided per
-  /// fragment (GL 1.1 section 3.8), so that projected texture coordinates interpolate as GL
-  /// says.
-  std::span<const glm::vec4> texcoords;
+  /// (s, t, r, q) per vertex for each texture unit: s / q and t / q index the unit's texture,
+  /// divided per fragment (GL 1.1 section 3.8), so that projected texture coordinates
+  /// interpolate as GL says. Empty: (0, 0, 0, 1).
+  std::array<std::span<const glm::vec4>, kMaxTextureUnits> texcoords;
   /// Fog coordinate per vertex (eye-space distance); empty: |z| of `positions`.
   std::span<const float> fog_coords;
   glm::vec4 constant_color{1.0f};

@@ -311,7 +311,7 @@ void raster_tiles(PipelineContext::Impl& impl, Framebuffer& fb, std::span<const 
 // asked for.
 bool deferrable(const PipelineContext::Impl& impl, const FragmentState& frag, const ShadeState& shade,
                 const VertexInput& in, const RenderStats* stats) {
-  return impl.deferred && !stats && !frag.capture && (!shade.texture || shade.texture_kept) &&
+  return impl.deferred && !stats && !frag.capture && (!shade.textured() || shade.texture_kept) &&
          shade.shadow_maps.empty() &&
          setup_items(in) <= kMaxDeferredTriangles && in.positions.size() <= kMaxDeferredVertices;
 }
@@ -412,7 +412,7 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
   RenderStats& stats = stats_out ? *stats_out : local;
   // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
   ShadeState effective = shade;
-  if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
+  effective.drop_incomplete_textures();
   const bool defer = fast::deferrable(impl, fragment, effective, in, stats_out);
   // Deferred draws wait in the queue while it has room; anything else draws after them.
   if (impl.queued > 0 && (!defer || impl.queued == fast::kMaxQueuedDraws || impl.jobs[0]->fb != &fb ||

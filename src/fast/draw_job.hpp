@@ -63,7 +63,7 @@ struct VaryingLayout {
   int front_color = -1, back_color = -1;          // 4 floats
   int front_secondary = -1, back_secondary = -1;  // 3 floats
   int eye_position = -1, eye_normal = -1;         // 3 floats
-  int texcoord = -1;                              // 4 floats: s, t, r, q
+  int texcoord[kMaxTextureUnits] = {-1, -1, -1, -1};  // per texture unit, 4 floats: s, t, r, q
   int fog = -1;                                   // 1 float: the fog coordinate
   int count = 0;                                  // floats per vertex
 };
@@ -78,10 +78,10 @@ struct VaryingLayout {
 /// BlendState::source_over).
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
 
-/// How a textured draw samples, decided once per draw (plan.cpp) for the SIMD samplers
-/// (texture-inl.h): the texture's levels and parameters as sample_texture reads them.
+/// How a texture unit of a draw samples, decided once per draw (plan.cpp) for the SIMD
+/// samplers (texture-inl.h): the texture's levels and parameters as sample_texture reads them.
 struct TexturePlan {
-  const Texture* texture = nullptr;  ///< complete; null: the draw is not textured
+  const Texture* texture = nullptr;  ///< complete; null: the unit is off
   bool one_d = false;
   bool three_d = false;  ///< r sampled too (texcoord planes project it)
   /// A level of detail per quad is needed: mipmaps, or minification and magnification
@@ -112,7 +112,8 @@ struct DrawPlan {
   bool two_side = false;         ///< back-facing triangles use back colours / material
   bool scalar_fragments = false; ///< per-fragment reference operations (capture, shadow
                                  ///< maps, Phong the SIMD kernel does not cover)
-  TexturePlan texture;           ///< texturing on the SIMD path
+  TexturePlan texture[kMaxTextureUnits];  ///< texturing on the SIMD path, per texture unit
+  bool textured = false;         ///< some unit has a texture
   bool writes_color = true;      ///< some colour channel is written (or captured)
   bool fog = false;              ///< fogged colours (ShadeState::fog)
   detail::FogParams fog_params;

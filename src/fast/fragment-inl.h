@@ -105,7 +105,7 @@ struct TrianglePlanes {
   float uniform_color[4];
   Plane position[3], normal[3];
   Plane fog[1];  // the fog coordinate (never flat), when the draw is fogged
-  TexcoordPlanes texcoord;  // when the draw is textured
+  TexcoordPlanes texcoord[kMaxTextureUnits];  // of each unit with a texture
   // The opaque kernels' colour planes, in bytes: 255 c + kJustBelowHalf, whose truncation
   // (clamped to [0, 255]) is the byte (to_unorm8). Equal to the colour planes' bytes for one
   // colour over the triangle; otherwise within the same few float roundings.
@@ -148,8 +148,10 @@ HWY_INLINE void set_up_color_planes(const DrawJob& job, const TriSetup& t, Trian
 HWY_INLINE void set_up_planes(const DrawJob& job, const TriSetup& t, TrianglePlanes& out) {
   out.ready = true;
   set_up_color_planes(job, t, out);
-  if (job.plan.texture.texture) {
-    out.texcoord = texcoord_planes(job, t);
+  if (job.plan.textured) {
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      if (job.plan.texture[u].texture) out.texcoord[u] = texcoord_planes(job, t, u);
+    }
     out.uniform = false;  // the environment combines the unclamped colour
   }
   if (!job.plan.fog) return;

@@ -40,7 +40,7 @@ void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, 
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.texture.texture || f.stencil.enabled) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled) {
     return BlockKernel::kGeneral;
   }
   if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
@@ -56,9 +56,9 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
 
 bool uses_mipmaps(TextureFilter f) { return f != TextureFilter::kNearest && f != TextureFilter::kLinear; }
 
-TexturePlan texture_plan(const ShadeState& shade) {
+TexturePlan texture_plan(const TextureUnit& unit) {
   TexturePlan tp;
-  const Texture* t = shade.texture;  // draw_fast.cpp leaves only complete textures
+  const Texture* t = unit.texture;  // draw_fast.cpp leaves only complete textures
   if (!t) return tp;
   tp.texture = t;
   tp.one_d = t->dimensions == 1;
@@ -74,10 +74,10 @@ TexturePlan texture_plan(const ShadeState& shade) {
   tp.width = float(base.width), tp.height = float(base.height), tp.depth = float(base.depth);
   tp.base_level = t->base_level;
   tp.last_level = t->last_level();
-  tp.adjust = texture_lod(*t, shade.texture_lod_bias);
+  tp.adjust = texture_lod(*t, unit.lod_bias);
   const glm::vec4 border = border_texel(*t);
-  for (int c = 0; c < 4; ++c) tp.border[c] = border[c] * 255.0f, tp.env_color[c] = shade.texture_env_color[c];
-  tp.env = shade.texture_env;
+  for (int c = 0; c < 4; ++c) tp.border[c] = border[c] * 255.0f, tp.env_color[c] = unit.env_color[c];
+  tp.env = unit.env;
   tp.format = t->format;
   return tp;
 }
@@ -130,7 +130,11 @@ void make_plan(DrawJob& job) {
   p.simd_vertex_lighting = p.vertex_lighting && !shadows && simd_materials;
   p.writes_color = writes_color(frag);
   p.scalar_fragments = frag.capture || (p.phong && (shadows || !simd_materials));
-  p.texture = texture_plan(shade);
+  p.textured = false;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    p.texture[u] = texture_plan(shade.textures[std::size_t(u)]);
+    p.textured = p.textured || p.texture[u].texture;
+  }
   p.fog = shade.fog.enabled;
   if (p.fog) p.fog_params = detail::fog_params(shade.fog);
   p.alpha_test = frag.alpha_test.enabled;
@@ -154,7 +158,9 @@ void make_plan(DrawJob& job) {
     l.eye_position = take(l, 3);
     l.eye_normal = take(l, 3);
   }
-  if (shade.texture) l.texcoord = take(l, 4);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (shade.textures[std::size_t(u)].texture) l.texcoord[u] = take(l, 4);
+  }
   if (p.fog) l.fog = take(l, 1);
   p.layout = l;
   if (shade.lighting) {
@@ -170,7 +176,9 @@ void expand_varyings(const VaryingLayout& l, const float* v, detail::Attribs& a)
   if (l.back_secondary >= 0) copy_slot(v + l.back_secondary, &a[detail::kBackSecondary], 3);
   if (l.eye_position >= 0) copy_slot(v + l.eye_position, &a[detail::kEyePosition], 3);
   if (l.eye_normal >= 0) copy_slot(v + l.eye_normal, &a[detail::kEyeNormal], 3);
-  if (l.texcoord >= 0) copy_slot(v + l.texcoord, &a[detail::kTexCoord], 4);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (l.texcoord[u] >= 0) copy_slot(v + l.texcoord[u], &a[std::size_t(detail::kTexCoord + 4 * u)], 4);
+  }
   if (l.fog >= 0) a[detail::kFogCoord] = v[l.fog];
 }
 
@@ -182,7 +190,9 @@ void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v
   if (l.front_secondary >= 0) copy_slot(&a[detail::kFrontSecondary], v + l.front_secondary, 3);
   if (l.eye_position >= 0) copy_slot(&a[detail::kEyePosition], v + l.eye_position, 3);
   if (l.eye_normal >= 0) copy_slot(&a[detail::kEyeNormal], v + l.eye_normal, 3);
-  if (l.texcoord >= 0) copy_slot(&a[detail::kTexCoord], v + l.texcoord, 4);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (l.texcoord[u] >= 0) copy_slot(&a[std::size_t(detail::kTexCoord + 4 * u)], v + l.texcoord[u], 4);
+  }
   if (l.fog >= 0) v[l.fog] = a[detail::kFogCoord];
 }
 

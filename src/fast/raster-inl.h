@@ -144,9 +144,11 @@ HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const Tria
   Rgba color;
   // The environment may replace the fragment's alpha with the texel's: its own alpha is then
   // not needed as the reference computes it.
-  const TexturePlan& tp = job.plan.texture;
-  const bool alpha_replaced = tp.env == TextureEnvMode::kReplace && tp.format != TextureFormat::kLuminance &&
-                              tp.format != TextureFormat::kRgb;
+  bool alpha_replaced = false;  // by some unit (the later ones combine the texel's alpha)
+  for (const TexturePlan& tp : job.plan.texture) {
+    alpha_replaced = alpha_replaced || (tp.texture && tp.env == TextureEnvMode::kReplace &&
+                                        tp.format != TextureFormat::kLuminance && tp.format != TextureFormat::kRgb);
+  }
   const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform &&
                      (job.frag->logic_op.enabled || !alpha_replaced);
   const bool exact_all = exact && job.frag->logic_op.enabled;
@@ -156,7 +158,11 @@ HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const Tria
     color = vertex_color(t, planes, w, false);
     if (exact && !t.flat) exact_color(t, planes, w, exact_all ? 0 : 3, color, false);
   }
-  texture_block(job, t, planes.texcoord, w, at.x, at.y, at.e, block_mask(at.live), color.c);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (job.plan.texture[u].texture) {
+      texture_block(job, u, t, planes.texcoord[u], w, at.x, at.y, at.e, block_mask(at.live), color.c);
+    }
+  }
   color.clamped = false;
   if (!job.plan.phong && !planes.has_secondary) return color;
   #pragma GCC unroll 3
@@ -179,7 +185,7 @@ HWY_INLINE Rgba block_color(const DrawJob& job, const TriSetup& t, TrianglePlane
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   Rgba color;
-  if (job.plan.texture.texture) {
+  if (job.plan.textured) {
     color = textured_color(job, t, planes, w, at);
   } else {
     color = job.plan.phong ? phong_color(job, t, planes, w) : vertex_color(t, planes, w);

@@ -31,11 +31,11 @@ struct TexcoordPlanes {
   bool with_r;  // a 3D texture: r is projected too
 };
 
-HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t) {
+HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t, int unit) {
   static constexpr int kSlot[4] = {0, 1, 3, 2};  // s, t, q, r
-  const int first = job.plan.layout.texcoord;
+  const int first = job.plan.layout.texcoord[unit];
   TexcoordPlanes p;
-  p.with_r = job.plan.texture.three_d;
+  p.with_r = job.plan.texture[unit].three_d;
   for (int i = 0; i < 4; ++i) {
     const int k = first + kSlot[i];
     const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
@@ -471,16 +471,27 @@ HWY_INLINE void texture_env(const TexturePlan& tp, VB f[4], const VB t[4]) {
       f[3] = alpha;
       return;
     }
+    case TextureEnvMode::kAdd: {
+      const VB zero = hn::Zero(db);
+      auto sat = [&](VB v) { return hn::IfThenElse(hn::Gt(v, zero), hn::IfThenElse(hn::Lt(v, one), v, one), zero); };
+      if (has_color) {
+        #pragma GCC unroll 3
+        for (int c = 0; c < 3; ++c) f[c] = sat(hn::Add(f[c], t[c]));
+      }
+      if (tp.format == TextureFormat::kIntensity) f[3] = sat(hn::Add(f[3], t[3]));
+      else if (has_alpha) f[3] = hn::Mul(f[3], t[3]);
+      return;
+    }
   }
 }
 
-/// The block's fragments textured: `color` (the primary colour, unclamped) combined with the
-/// texel at each lane's coordinates. `e` are the rows' edge values, `w` their perspective
-/// weights; `live` the lanes whose colour is used.
-HWY_INLINE void texture_block(const DrawJob& job, const TriSetup& t, const TexcoordPlanes& planes, const Weights& w,
-                              int x, int y, const VD e[kRows][3], MB live, VB color[4]) {
+/// The block's fragments textured by texture unit `unit`: `color` (the previous unit's, or the
+/// primary colour, unclamped) combined with the texel at each lane's coordinates. `e` are the
+/// rows' edge values, `w` their perspective weights; `live` the lanes whose colour is used.
+HWY_INLINE void texture_block(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
+                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB color[4]) {
   const DB db;
-  const TexturePlan& tp = job.plan.texture;
+  const TexturePlan& tp = job.plan.texture[unit];
   VB s, tc, r = hn::Zero(db);
   project(db, planes, w.f0, w.f1, s, tc, r);
   QuadDerivatives d;

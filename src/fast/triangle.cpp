@@ -163,11 +163,16 @@ detail::Fragment reference_fragment(const DrawJob& job, const TriSetup& t, Worke
     frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
                                       q2 * (*v[2]->attr)[i]);
   }
-  if (job.shade->texture) {
-    detail::fragment_texcoords(v, detail::texcoord_weights(v, w0, w1, t.inv_area, t.affine), frag);
+  if (job.plan.textured) {
+    const detail::FloatWeights tw = detail::texcoord_weights(v, w0, w1, t.inv_area, t.affine);
     detail::FixedPoint p[3];
     for (int k = 0; k < 3; ++k) p[k] = {t.v[k]->sx, t.v[k]->sy};
-    detail::texture_derivatives(v, p, x, y, job.fb->height, frag);
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      if (!job.plan.texture[u].texture) continue;
+      const int first = detail::kTexCoord + 4 * u;
+      detail::fragment_texcoords(v, tw, first, frag);
+      frag.texture_derivatives[std::size_t(u)] = detail::texture_derivatives(v, p, x, y, job.fb->height, first);
+    }
   }
   return frag;
 }

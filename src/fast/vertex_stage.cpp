@@ -212,9 +212,11 @@ void other_varyings(DrawJob& job, std::size_t i) {
     glm::vec3 n = in.normals.empty() ? glm::vec3(0.0f) : in.normals[i];
     std::memcpy(v + l.eye_normal, &n, sizeof(float) * 3);
   }
-  if (l.texcoord >= 0) {
-    glm::vec4 t = in.texcoords.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : in.texcoords[i];
-    std::memcpy(v + l.texcoord, &t, sizeof(float) * 4);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (l.texcoord[u] < 0) continue;
+    const std::span<const glm::vec4> coords = in.texcoords[std::size_t(u)];
+    const glm::vec4 t = coords.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : coords[i];
+    std::memcpy(v + l.texcoord[u], &t, sizeof(float) * 4);
   }
   if (l.fog >= 0) v[l.fog] = detail::fog_coordinate(in, i);
 }

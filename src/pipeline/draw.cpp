@@ -85,7 +85,10 @@ std::vector<ClipVertex> vertex_stage(const glm::mat4& projection, const ShadeSta
     glm::vec4 p = in.positions[i];
     put(v.attr, kEyePosition, p.w != 0.0f ? glm::vec3(p) / p.w : glm::vec3(p));
     if (!in.normals.empty()) put(v.attr, kEyeNormal, in.normals[i]);
-    if (!in.texcoords.empty()) put(v.attr, kTexCoord, in.texcoords[i]);
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      const std::span<const glm::vec4> t = in.texcoords[std::size_t(u)];
+      put(v.attr, kTexCoord + 4 * u, t.empty() ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f) : t[i]);
+    }
     v.attr[kFogCoord] = fog_coordinate(in, i);
   }
   return out;
@@ -156,15 +159,20 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     lit.secondary = get3(a, front ? kFrontSecondary : kBackSecondary);
   }
   glm::vec4 color = lit.primary;
-  if (shade.texture) {
-    const Texture& t = *shade.texture;
+  // GL 1.3 section 3.8.13: the units in order, each combining its texel with the colour the
+  // unit before it gave (a unit without a texture passes it on).
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    const TextureUnit& unit = shade.textures[std::size_t(u)];
+    if (!unit.texture) continue;
+    const Texture& t = *unit.texture;
     // GL 1.1 section 3.8: s / q, t / q (and r / q) per fragment (projective texture
     // coordinates).
-    const float q = a[kTexCoord + 3];
-    const glm::vec3 str(finite_texcoord(a[kTexCoord] / q), finite_texcoord(a[kTexCoord + 1] / q),
-                        finite_texcoord(a[kTexCoord + 2] / q));
-    glm::vec4 texel = sample_texture(t, str, texture_rho2(t, f.texture_derivatives), shade.texture_lod_bias);
-    color = apply_texture_env(shade.texture_env, t.format, color, texel, shade.texture_env_color);
+    const int k = kTexCoord + 4 * u;
+    const float q = a[std::size_t(k + 3)];
+    const glm::vec3 str(finite_texcoord(a[std::size_t(k)] / q), finite_texcoord(a[std::size_t(k + 1)] / q),
+                        finite_texcoord(a[std::size_t(k + 2)] / q));
+    glm::vec4 texel = sample_texture(t, str, texture_rho2(t, f.texture_derivatives[std::size_t(u)]), unit.lod_bias);
+    color = apply_texture_env(unit.env, t.format, color, texel, unit.env_color);
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped
   // (Mesa's fixed-function fragment program adds it without saturating).
@@ -244,7 +252,7 @@ void draw_polygon(const ReferenceDraw& ctx, std::vector<ClipVertex>& poly,
   for (std::size_t i = 1; i + 1 < win.size(); ++i) {
     const WindowVertex &a = win[0], &b = win[i], &c = win[i + 1];
     float offset = ctx.fragment->polygon_offset ? polygon_offset(a, b, c, *ctx.fragment) : 0.0f;
-    rasterize_triangle(a, b, c, fb.width, fb.height, ctx.shade->texture != nullptr,
+    rasterize_triangle(a, b, c, fb.width, fb.height, textured_units(*ctx.shade),
                        [&](const Fragment& f) { reference_fragment(ctx, f, front, offset, nullptr, true); });
   }
 }
@@ -264,7 +272,7 @@ void draw_triangles(Framebuffer& fb, const glm::mat4& projection, const Viewport
   auto t1 = Clock::now();
   // An incomplete texture is as if texturing were off (GL 1.1 section 3.8.9).
   ShadeState effective = shade;
-  if (effective.texture && !effective.texture->complete()) effective.texture = nullptr;
+  effective.drop_incomplete_textures();
   ReferenceDraw ctx{&fb, &fragment, &effective, &viewport, &stats};
   bool flat = shade.shading == ShadingMode::kFlat;
   std::array<glm::vec4, ClipPlanes::kCount> planes;

@@ -33,7 +33,9 @@ Fragment make_fragment(const FragmentRect& r, int x, int y, std::size_t i) {
   f.attr.fill(0.0f);
   const glm::vec4 c = r.colors.size() == 1 ? r.colors[0] : r.colors[i];
   for (int k = 0; k < 4; ++k) f.attr[detail::kFrontColor + k] = f.attr[detail::kBackColor + k] = c[k];
-  for (int k = 0; k < 4; ++k) f.attr[detail::kTexCoord + k] = r.texcoord[k];
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    for (int k = 0; k < 4; ++k) f.attr[std::size_t(detail::kTexCoord + 4 * u + k)] = r.texcoords[std::size_t(u)][k];
+  }
   f.attr[detail::kFogCoord] = r.fog_coord;
   return f;  // texture derivatives zero: the magnification filter
 }
@@ -91,7 +93,7 @@ void draw_fragments(Framebuffer& fb, const FragmentState& fragment, const ShadeS
   if (!valid(fb, rect)) return;
   ShadeState s = shade;
   s.lighting = false;
-  if (s.texture && !s.texture->complete()) s.texture = nullptr;  // GL 1.1 section 3.8.9
+  s.drop_incomplete_textures();  // GL 1.1 section 3.8.9
   const long x0 = std::max<long>(rect.x, 0), x1 = std::min<long>(long(rect.x) + rect.width, fb.width);
   const long y0 = std::max<long>(rect.y, 0), y1 = std::min<long>(long(rect.y) + rect.height, fb.height);
   if (x0 >= x1 || y0 >= y1) return;

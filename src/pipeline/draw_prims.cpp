@@ -24,7 +24,7 @@ class ReferenceSink final : public PieceSink {
     for (int t = 0; t < p.triangles; ++t) {
       const WindowVertex &a = w[p.tri[t][0]], &b = w[p.tri[t][1]], &c = w[p.tri[t][2]];
       const float offset = p.offset ? polygon_offset(a, b, c, *ctx_.fragment) : 0.0f;
-      rasterize_triangle(a, b, c, fb.width, fb.height, ctx_.shade->texture != nullptr,
+      rasterize_triangle(a, b, c, fb.width, fb.height, textured_units(*ctx_.shade),
                          [&](const Fragment& f) { reference_fragment(ctx_, f, p.front, offset, coverage, p.polygon); });
     }
   }

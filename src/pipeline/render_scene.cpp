@@ -104,16 +104,16 @@ void draw_object(Framebuffer& fb, const Scene& scene, const SceneObject& obj,
   shade.lights = lights;
   shade.front = obj.front;
   shade.back = obj.back.value_or(obj.front);
-  shade.texture = shadow ? nullptr : obj.texture.get();
+  shade.textures[0].texture = shadow ? nullptr : obj.texture.get();
   shade.shadow_maps = shadow_maps;
-  shade.texture_env = obj.texture_env;
+  shade.textures[0].env = obj.texture_env;
   VertexInput in;
   in.positions = eye.positions;
   in.normals = eye.normals;
   if (!shadow) in.colors = obj.mesh->colors;
-  if (shade.texture) {
+  if (shade.textures[0].texture) {
     for (const glm::vec2& t : obj.mesh->texcoords) eye.texcoords.emplace_back(t * obj.texture_repeat, 0.0f, 1.0f);
-    in.texcoords = eye.texcoords;
+    in.texcoords[0] = eye.texcoords;
   }
   in.constant_color = shadow ? *pass.shadow_color : obj.color;
   in.triangles = obj.mesh->triangles;

@@ -22,9 +22,9 @@ enum Attr : int {
   kBackSecondary = 11,  // 3: separate specular, back
   kEyePosition = 14,    // 3: for per-pixel (Phong) lighting
   kEyeNormal = 17,      // 3
-  kTexCoord = 20,       // 4: s, t, r, q (divided by q per fragment)
-  kFogCoord = 24,       // 1: fog coordinate (eye-space distance), never flat
-  kAttrCount = 25,
+  kTexCoord = 20,       // 4 per texture unit: s, t, r, q (divided by q per fragment)
+  kFogCoord = kTexCoord + 4 * kMaxTextureUnits,  // 1: fog coordinate (eye-space distance), never flat
+  kAttrCount,
 };
 using Attribs = std::array<float, kAttrCount>;
 
@@ -62,9 +62,10 @@ struct Fragment {
   int x, y;
   float z;
   Attribs attr;  // perspective-correct
-  // Differences of s / q and t / q over the fragment's 2x2 quad, llvmpipe's (for the level
-  // of detail); computed only when the rasterizer is asked for them.
-  TextureDerivatives texture_derivatives;
+  // Per texture unit, the differences of s / q and t / q over the fragment's 2x2 quad,
+  // llvmpipe's (for the level of detail); computed only for the units the rasterizer is asked
+  // for.
+  std::array<TextureDerivatives, kMaxTextureUnits> texture_derivatives;
 };
 
 /// The viewport mapping of a clipped vertex (draw.cpp); its attributes stay in `v`.
@@ -77,11 +78,21 @@ float polygon_offset(const WindowVertex& a, const WindowVertex& b, const WindowV
 /// Rasterizes one triangle with the top-left fill rule at pixel centres (8 sub-pixel bits),
 /// calling `emit(fragment)` for every covered pixel inside the scissor [0, width) x [0, height).
 /// Triangles with zero area produce nothing. Returns the number of covered pixels.
-/// With `texture_lod`, fragments also carry their quad's texture-coordinate differences.
+/// For each texture unit whose bit is set in `texture_units`, fragments also carry the unit's
+/// texture coordinates in the fast pipeline's float arithmetic and their quad's differences.
 template <class Emit>
 std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
-                                 const WindowVertex& c, int width, int height, bool texture_lod,
+                                 const WindowVertex& c, int width, int height, unsigned texture_units,
                                  Emit&& emit);
+
+/// The bits of the units of `shade` that have a texture (rasterize_triangle's texture_units).
+inline unsigned textured_units(const ShadeState& shade) {
+  unsigned bits = 0;
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (shade.textures[std::size_t(u)].texture) bits |= 1u << u;
+  }
+  return bits;
+}
 
 /// A vertex's fog coordinate (draw.cpp): VertexInput::fog_coords[i], or |z| of its eye-space
 /// position (Mesa's default GL_EYE_PLANE_ABSOLUTE_NV distance).

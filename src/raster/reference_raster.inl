@@ -46,14 +46,15 @@ inline FloatWeights texcoord_weights(const WindowVertex* const v[3], double w0, 
   return float_weights(w0 * inv_area, w1 * inv_area, inv_w, affine);
 }
 
-/// Texture coordinate slot `slot` (kTexCoord + 0..3) at weights `w` (texcoord.hpp).
+/// Texture coordinate slot `slot` (kTexCoord + 4 unit + 0..3) at weights `w` (texcoord.hpp).
 inline float texcoord_at(const WindowVertex* const v[3], int slot, FloatWeights w) {
   return texcoord_plane((*v[0]->attr)[slot], (*v[1]->attr)[slot], (*v[2]->attr)[slot], w);
 }
 
-/// The four texture coordinates of a fragment, in the fast pipeline's float arithmetic.
-inline void fragment_texcoords(const WindowVertex* const v[3], FloatWeights w, Fragment& frag) {
-  for (int i = 0; i < 4; ++i) frag.attr[kTexCoord + i] = texcoord_at(v, kTexCoord + i, w);
+/// The four texture coordinates of a fragment from slot `first`, in the fast pipeline's float
+/// arithmetic.
+inline void fragment_texcoords(const WindowVertex* const v[3], FloatWeights w, int first, Fragment& frag) {
+  for (int i = 0; i < 4; ++i) frag.attr[std::size_t(first + i)] = texcoord_at(v, first + i, w);
 }
 
 /// llvmpipe computes the level of detail once per 2x2 pixel quad of its own rows, which run
@@ -61,17 +62,17 @@ inline void fragment_texcoords(const WindowVertex* const v[3], FloatWeights w, F
 /// top-left pixel to the pixel on its right and to the one below (lp_bld_sample.c's rho).
 /// Every pixel of the quad gets those differences, covered or not. The projected
 /// coordinates at those pixels are the fragments' own (texcoord.hpp), wherever they lie.
-inline void texture_derivatives(const WindowVertex* const v[3], const FixedPoint p[3], int x,
-                                int y, int height, Fragment& frag) {
+inline TextureDerivatives texture_derivatives(const WindowVertex* const v[3], const FixedPoint p[3], int x,
+                                             int y, int height, int first) {
   const double inv_area = 1.0 / double(edge_function(p[0], p[1], p[2]));
   const bool affine = v[0]->inv_w == v[1]->inv_w && v[1]->inv_w == v[2]->inv_w;
-  frag.texture_derivatives = quad_derivatives(x, y, height, [&](int px, int py) {
+  return quad_derivatives(x, y, height, [&](int px, int py) {
     const FixedPoint c{std::int64_t(px) * kSubpixelOne + kSubpixelOne / 2,
                        std::int64_t(py) * kSubpixelOne + kSubpixelOne / 2};
     const FloatWeights w = texcoord_weights(v, double(edge_function(p[1], p[2], c)),
                                             double(edge_function(p[2], p[0], c)), inv_area, affine);
-    return project_texcoord(texcoord_at(v, kTexCoord, w), texcoord_at(v, kTexCoord + 1, w),
-                            texcoord_at(v, kTexCoord + 2, w), texcoord_at(v, kTexCoord + 3, w));
+    return project_texcoord(texcoord_at(v, first, w), texcoord_at(v, first + 1, w),
+                            texcoord_at(v, first + 2, w), texcoord_at(v, first + 3, w));
   });
 }
 
@@ -94,7 +95,7 @@ inline float plane_depth(float b0, float b1, const DepthPlane& p) {
 
 template <class Emit>
 std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
-                                 const WindowVertex& c, int width, int height, bool texture_lod,
+                                 const WindowVertex& c, int width, int height, unsigned texture_units,
                                  Emit&& emit) {
   const WindowVertex* v[3] = {&a, &b, &c};
   FixedPoint p[3] = {snap(a.x, a.y), snap(b.x, b.y), snap(c.x, c.y)};
@@ -148,9 +149,13 @@ std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
         frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
                                           q2 * (*v[2]->attr)[i]);
       }
-      if (texture_lod) {
-        fragment_texcoords(v, texcoord_weights(v, double(w0), double(w1), inv_area, affine), frag);
-        texture_derivatives(v, p, x, y, height, frag);
+      if (texture_units) {
+        const FloatWeights tw = texcoord_weights(v, double(w0), double(w1), inv_area, affine);
+        for (int u = 0; u < kMaxTextureUnits; ++u) {
+          if (!(texture_units >> u & 1u)) continue;
+          fragment_texcoords(v, tw, kTexCoord + 4 * u, frag);
+          frag.texture_derivatives[std::size_t(u)] = texture_derivatives(v, p, x, y, height, kTexCoord + 4 * u);
+        }
       }
       ++covered;
       emit(frag);

@@ -330,6 +330,12 @@ glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm
                                                     : (has_alpha ? f.a * at : f.a);
       return glm::vec4(c, a);
     }
+    case TextureEnvMode::kAdd: {  // GL 1.3 table 3.23; sums saturated, as Mesa's program does
+      auto sat = [](float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; };
+      const glm::vec3 c = has_color ? glm::vec3(sat(cf.r + ct.r), sat(cf.g + ct.g), sat(cf.b + ct.b)) : cf;
+      const float a = format == TextureFormat::kIntensity ? sat(f.a + at) : (has_alpha ? f.a * at : f.a);
+      return glm::vec4(c, a);
+    }
   }
   return f;
 }

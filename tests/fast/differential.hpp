@@ -71,7 +71,7 @@ inline std::string compare_captures(const FragmentCapture& fast, const FragmentC
 // Leaves a random draw only state the fast pipeline's SIMD path draws alone and that the draw
 // does not hold on to: no texture, capture, stencil or shadow maps.
 inline void simd_only(RandomDraw& d) {
-  d.shade.texture = nullptr;
+  for (TextureUnit& u : d.shade.textures) u.texture = nullptr;
   d.frag.capture = nullptr;
   d.frag.stencil.enabled = false;
   d.capture = false;

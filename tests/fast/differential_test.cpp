@@ -62,7 +62,7 @@ TEST(FastDifferential, CoverageCountsAreIdentical) {
       d.frag.depth_test = false;
       d.frag.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
       d.shade.lighting = false;
-      d.shade.texture = nullptr;
+      for (TextureUnit& u : d.shade.textures) u.texture = nullptr;
       d.colors.clear();
       d.back_colors.clear();
       // No secondary colour either: its interpolated sum is within a step of the

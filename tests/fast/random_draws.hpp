@@ -18,6 +18,8 @@ struct RandomDraw {
   std::vector<glm::vec4> positions, colors, back_colors;
   std::vector<glm::vec3> normals, secondary, back_secondary;
   std::vector<glm::vec4> texcoords;  // (s, t, r, q); q != 1 in some draws (projective)
+  // A second texture unit's coordinates and texture (multitexture), at unit `second_unit`.
+  std::vector<glm::vec4> texcoords2;
   std::vector<float> fog_coords;
   std::vector<Triangle> triangles;
   std::vector<std::uint8_t> triangle_flags;
@@ -25,7 +27,8 @@ struct RandomDraw {
   std::vector<std::uint32_t> points;
   std::vector<Light> lights;
   std::vector<ShadowMap> shadow_maps;
-  std::shared_ptr<Texture> texture;
+  std::shared_ptr<Texture> texture, texture2;
+  int second_unit = 1;
   glm::vec4 constant_color{1.0f};
   glm::mat4 projection{1.0f};
   Viewport viewport;
@@ -41,7 +44,8 @@ struct RandomDraw {
     in.back_colors = back_colors;
     in.secondary_colors = secondary;
     in.back_secondary_colors = back_secondary;
-    in.texcoords = texcoords;
+    in.texcoords[0] = texcoords;
+    in.texcoords[std::size_t(second_unit)] = texcoords2;
     in.fog_coords = fog_coords;
     in.constant_color = constant_color;
     in.triangles = triangles;
@@ -475,10 +479,10 @@ class RandomDraws {
     s.back = material();
     if (!d.texcoords.empty() && chance(0.25)) {
       d.texture = texture();
-      s.texture_env_color = env_color_;
+      s.textures[0].env_color = env_color_;
     }
-    s.texture = d.texture.get();
-    s.texture_env = TextureEnvMode(integer(0, 3));
+    s.textures[0].texture = d.texture.get();
+    s.textures[0].env = TextureEnvMode(integer(0, 4));
     if (chance(0.1)) {
       for (std::size_t i = 0; i < d.lights.size(); ++i) d.shadow_maps.push_back(shadow_map(d.projection));
       s.shadow_maps = d.shadow_maps;

@@ -132,15 +132,31 @@ TexturedScene textured_scene(unsigned seed) {
     if (pick(0, 1)) d.triangles = {{1, 2, 3}, {1, 3, 0}};
     d.viewport = {0, 0, width, height, 0.0f, 1.0f};
     d.shade.lighting = false;
-    d.shade.texture = d.texture.get();
-    d.shade.texture_env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
-    if (pick(0, 3) == 0) d.shade.texture_lod_bias = real(-3.0f, 3.0f);
+    TextureUnit& unit = d.shade.textures[0];
+    unit.texture = d.texture.get();
+    unit.env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+    if (pick(0, 3) == 0) unit.lod_bias = real(-3.0f, 3.0f);
     d.frag.depth_test = pick(0, 1);
     if (scene.exact) {
       d.texture->format = TextureFormat::kRgba;
-      d.shade.texture_env = TextureEnvMode::kReplace;
+      unit.env = TextureEnvMode::kReplace;
     } else {
-      d.shade.texture_env = TextureEnvMode(pick(0, 3));
+      unit.env = TextureEnvMode(pick(0, 4));
+      if (pick(0, 2) == 0) {  // a second unit (multitexture) over the first, at unit 1 to 3
+        d.second_unit = pick(1, kMaxTextureUnits - 1);
+        const int kind2 = pick(0, 5);
+        d.texture2 = random_texture(rng, kind2 == 0, kind2 == 5);
+        const float scale = real(0.2f, 6.0f), shift = real(-1.0f, 1.0f);
+        for (const glm::vec4& tc : d.texcoords) {
+          const float r2 = kind2 == 5 ? real(-1.5f, 2.5f) * tc.w : tc.z;
+          d.texcoords2.push_back({tc.y * scale + shift * tc.w, tc.x * scale, r2, tc.w});
+        }
+        TextureUnit& second = d.shade.textures[std::size_t(d.second_unit)];
+        second.texture = d.texture2.get();
+        second.env = TextureEnvMode(pick(0, 4));
+        second.env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+        if (pick(0, 3) == 0) second.lod_bias = real(-3.0f, 3.0f);
+      }
       d.shade.shading = pick(0, 3) == 0 ? ShadingMode::kFlat : ShadingMode::kGouraud;
       if (pick(0, 2) == 0) d.frag.blend = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
       if (pick(0, 3) == 0) d.frag.alpha_test = {true, CompareFunc::kGreater, real(0.2f, 0.8f)};
@@ -221,8 +237,8 @@ TEST(TextureDifferential, FloorThroughEveryLevelOnAnOddHeight) {
     d.texture->levels.push_back(level);
     generate_mipmaps(*d.texture);
     d.texture->min_filter = TextureFilter(filter);
-    d.shade.texture = d.texture.get();
-    d.shade.texture_env = TextureEnvMode::kReplace;
+    d.shade.textures[0].texture = d.texture.get();
+    d.shade.textures[0].env = TextureEnvMode::kReplace;
     d.shade.lighting = false;
     d.projection = glm::perspective(glm::radians(60.0f), 64.0f / 63.0f, 0.1f, 200.0f);
     d.positions = {{-40, -1, -0.5f, 1}, {40, -1, -0.5f, 1}, {40, -1, -160, 1}, {-40, -1, -160, 1}};
