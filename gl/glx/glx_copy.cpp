@@ -78,6 +78,7 @@ void copy_groups(const GlContext& s, GlContext& d, unsigned long mask) {
       const TextureUnitState& from = s.textures.units[u];
       to.enabled_1d = from.enabled_1d, to.enabled_2d = from.enabled_2d, to.enabled_3d = from.enabled_3d;
       to.env_mode = from.env_mode, to.env_color = from.env_color, to.lod_bias = from.lod_bias;
+      to.combine = from.combine;
       to.gen = from.gen;
       if (d.textures.names != s.textures.names) continue;  // a binding means something only within a share group
       for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D}) {

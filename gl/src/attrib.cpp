@@ -164,6 +164,7 @@ void restore_textures(GlContext& c, const AttribRecord& r) {
     d.env_mode = s.env_mode;
     d.env_color = s.env_color;
     d.lod_bias = s.lod_bias;
+    d.combine = s.combine;
     // Texture generation (table 6.16): the modes and both planes, the eye plane as stored (in
     // eye coordinates, not transformed again), as Mesa's pop copies it; the enables follow.
     for (std::size_t i = 0; i < d.gen.size(); ++i) {

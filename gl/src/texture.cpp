@@ -153,13 +153,13 @@ void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
   if (!v) return c.set_error(GL_INVALID_VALUE);
   if (pname == GL_TEXTURE_ENV_MODE) {
     const GLint m = enum_param(v[0], false);
-    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE && m != GL_ADD) {
-      return c.set_error(GL_INVALID_ENUM);  // (GL_ADD: GL 1.3)
+    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE && m != GL_ADD && m != GL_COMBINE) {
+      return c.set_error(GL_INVALID_ENUM);  // (GL_ADD, GL_COMBINE: GL 1.3)
     }
     c.textures.unit().env_mode = GLenum(m);
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) c.textures.unit().env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
-  } else {
+  } else if (!tex_env_combine(c, pname, v[0])) {
     c.set_error(GL_INVALID_ENUM);
   }
 }
@@ -178,7 +178,7 @@ void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
   } else if (pname == GL_TEXTURE_ENV_COLOR) {
     for (int i = 0; i < 4; ++i) v[i] = c.textures.unit().env_color[i];
     n = 4;
-  } else if (pname != GL_TEXTURE_ENV_MODE) {
+  } else if (pname != GL_TEXTURE_ENV_MODE && !get_tex_env_combine(c.textures.unit(), pname, v[0])) {
     return c.set_error(GL_INVALID_ENUM);
   }
   if (!params) return c.set_error(GL_INVALID_VALUE);
@@ -239,6 +239,7 @@ TextureEnvMode env_mode(GLenum mode) {
     case GL_DECAL: return TextureEnvMode::kDecal;
     case GL_BLEND: return TextureEnvMode::kBlend;
     case GL_ADD: return TextureEnvMode::kAdd;
+    case GL_COMBINE: return TextureEnvMode::kCombine;
     default: return TextureEnvMode::kModulate;
   }
 }
@@ -283,6 +284,7 @@ void texture_draw_state(GlContext& c, ShadeState& shade) {
     unit.env = env_mode(s.env_mode);
     unit.env_color = s.env_color;
     unit.lod_bias = s.lod_bias;
+    if (unit.env == TextureEnvMode::kCombine) unit.combine = core_combine(s.combine);
     if (!unit.texture) continue;
     shade.texture_kept = true;
     if (!cleared && (!c.pipeline || c.pipeline->deferred_draws() == 0)) kept.clear();

@@ -31,6 +31,15 @@ unsigned textured_units(GlContext& c);
 /// while draws that read them wait, and texture_changing finishes them before they change.
 void texture_draw_state(GlContext& c, ShadeState& shade);
 
+/// glTexEnv's GL_COMBINE parameters (GL 1.3 section 3.8.13, texenv_combine.cpp): false when
+/// `pname` is not one of them; else true, with the active unit's state set from `v` or the
+/// error of a wrong value raised.
+bool tex_env_combine(GlContext& c, GLenum pname, float v);
+/// glGetTexEnv's GL_COMBINE parameters: false when `pname` is not one of them.
+bool get_tex_env_combine(const TextureUnitState& u, GLenum pname, float& out);
+/// The core's form of a unit's GL_COMBINE environment.
+TextureCombine core_combine(const TexEnvCombine& c);
+
 /// Call before `t`'s texels or parameters change: the waiting draws that read it are drawn
 /// first (GL's order), as Mesa flushes before it modifies a texture.
 void texture_changing(GlContext& c, const TextureObject& t);

@@ -69,6 +69,17 @@ inline int texture_dimensions(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
 }
 
+/// A unit's GL_COMBINE environment as glTexEnv gave it (GL 1.3 section 3.8.13, table 6.20):
+/// the functions, sources and operands of the colour and of alpha, and the scales.
+struct TexEnvCombine {
+  GLenum rgb = GL_MODULATE, alpha = GL_MODULATE;
+  std::array<GLenum, 3> source_rgb{GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  std::array<GLenum, 3> source_alpha{GL_TEXTURE, GL_PREVIOUS, GL_CONSTANT};
+  std::array<GLenum, 3> operand_rgb{GL_SRC_COLOR, GL_SRC_COLOR, GL_SRC_ALPHA};
+  std::array<GLenum, 3> operand_alpha{GL_SRC_ALPHA, GL_SRC_ALPHA, GL_SRC_ALPHA};
+  float rgb_scale = 1.0f, alpha_scale = 1.0f;
+};
+
 /// One texture unit (GL 1.3 section 2.7; table 6.19 ff.): its target enables and bindings,
 /// its environment and its coordinate generation. Its texture matrix stack and current
 /// texture coordinates are the context's (per unit there too).
@@ -78,6 +89,7 @@ struct TextureUnitState {
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
   float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
+  TexEnvCombine combine;
   std::array<TexGenCoord, 4> gen;  // s, t, r, q
 
   TextureBinding& binding(GLenum target) {

@@ -58,7 +58,8 @@ struct FogState {
 struct TextureUnit {
   const Texture* texture = nullptr;
   TextureEnvMode env = TextureEnvMode::kModulate;
-  glm::vec4 env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR, for kBlend, in [0, 1]
+  glm::vec4 env_color{0.0f};  ///< GL_TEXTURE_ENV_COLOR (kBlend, kCombine's constant), in [0, 1]
+  TextureCombine combine;     ///< kCombine's functions, sources, operands and scales
   /// The unit's GL_TEXTURE_LOD_BIAS (GL 1.4, glTexEnv GL_TEXTURE_FILTER_CONTROL), added to the
   /// texture's own (texture_lod).
   float lod_bias = 0.0f;

@@ -21,8 +21,31 @@ enum class TextureFilter {
   kNearest, kLinear,
   kNearestMipmapNearest, kLinearMipmapNearest, kNearestMipmapLinear, kLinearMipmapLinear,
 };
-/// glTexEnv GL_TEXTURE_ENV_MODE (GL 1.1 table 3.22; GL_ADD: GL 1.3 table 3.23).
-enum class TextureEnvMode { kModulate, kReplace, kDecal, kBlend, kAdd };
+/// glTexEnv GL_TEXTURE_ENV_MODE (GL 1.1 table 3.22; GL_ADD and GL_COMBINE: GL 1.3 tables 3.23,
+/// 3.24).
+enum class TextureEnvMode { kModulate, kReplace, kDecal, kBlend, kAdd, kCombine };
+
+/// GL_COMBINE_RGB / GL_COMBINE_ALPHA (GL 1.3 table 3.24; the dot products for RGB only).
+enum class CombineFunction : std::uint8_t {
+  kReplace, kModulate, kAdd, kAddSigned, kInterpolate, kSubtract, kDot3Rgb, kDot3Rgba,
+};
+/// GL_SOURCEn_RGB / _ALPHA (table 3.25): the unit's texel, another unit's (GL 1.4's crossbar:
+/// kTexture0 + i), the environment colour, the fragment's primary colour, the previous unit's.
+enum class CombineSource : std::uint8_t {
+  kTexture, kTexture0, kTexture1, kTexture2, kTexture3, kConstant, kPrimaryColor, kPrevious,
+};
+/// GL_OPERANDn_RGB / _ALPHA (tables 3.25, 3.26).
+enum class CombineOperand : std::uint8_t { kSrcColor, kOneMinusSrcColor, kSrcAlpha, kOneMinusSrcAlpha };
+
+/// A texture unit's GL_COMBINE environment (GL 1.3 section 3.8.13).
+struct TextureCombine {
+  CombineFunction rgb = CombineFunction::kModulate, alpha = CombineFunction::kModulate;
+  CombineSource rgb_source[3] = {CombineSource::kTexture, CombineSource::kPrevious, CombineSource::kConstant};
+  CombineSource alpha_source[3] = {CombineSource::kTexture, CombineSource::kPrevious, CombineSource::kConstant};
+  CombineOperand rgb_operand[3] = {CombineOperand::kSrcColor, CombineOperand::kSrcColor, CombineOperand::kSrcAlpha};
+  CombineOperand alpha_operand[3] = {CombineOperand::kSrcAlpha, CombineOperand::kSrcAlpha, CombineOperand::kSrcAlpha};
+  float rgb_scale = 1.0f, alpha_scale = 1.0f;  ///< 1, 2 or 4
+};
 
 /// Texture units (GL 1.3 section 2.7): each has its own texture coordinates, texture and
 /// environment; the units apply in order, each to the previous unit's colour. llvmpipe's
@@ -136,8 +159,24 @@ glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec3 str, float rho2
 /// below 2^20, so that texel indices never overflow (such coordinates only repeat or clamp).
 float finite_texcoord(float v);
 
-/// Combines the fragment colour with a texel as the environment mode says.
+/// Combines the fragment colour with a texel as the environment mode says (not kCombine).
 glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm::vec4& fragment,
                             const glm::vec4& texel, const glm::vec4& env_color);
+
+/// What a GL_COMBINE environment reads: each unit's texel (zero for a unit without a texture,
+/// as llvmpipe's fixed-function program reads one), the unit's own index, the environment
+/// colour, the fragment's primary colour and the previous unit's colour.
+struct CombineInputs {
+  const glm::vec4* texels;  ///< kMaxTextureUnits of them
+  int unit;
+  glm::vec4 constant, primary, previous;
+};
+
+/// The GL_COMBINE environment (GL 1.3 section 3.8.13) as Mesa's fixed-function fragment
+/// program computes it: the function of the operands in float, then, with a scale, the scaled
+/// result clamped to [0, 1]; without one, clamped only after the functions that can leave
+/// [0, 1] (add, add signed, subtract, the dot products). The dot products' result is every
+/// colour component, and alpha too for kDot3Rgba (scaled there by the alpha scale).
+glm::vec4 apply_texture_combine(const TextureCombine& combine, const CombineInputs& in);
 
 }  // namespace shadelab

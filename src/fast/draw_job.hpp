@@ -100,6 +100,7 @@ struct TexturePlan {
   TextureEnvMode env = TextureEnvMode::kModulate;
   TextureFormat format = TextureFormat::kRgba;
   float env_color[4] = {};
+  TextureCombine combine;  ///< env kCombine's
 };
 
 /// What a draw needs from each stage, decided once per draw (plan.cpp).
@@ -114,6 +115,7 @@ struct DrawPlan {
                                  ///< maps, Phong the SIMD kernel does not cover)
   TexturePlan texture[kMaxTextureUnits];  ///< texturing on the SIMD path, per texture unit
   bool textured = false;         ///< some unit has a texture
+  bool combine = false;          ///< some unit's environment is GL_COMBINE
   bool writes_color = true;      ///< some colour channel is written (or captured)
   bool fog = false;              ///< fogged colours (ShadeState::fog)
   detail::FogParams fog_params;

@@ -78,6 +78,7 @@ TexturePlan texture_plan(const TextureUnit& unit) {
   const glm::vec4 border = border_texel(*t);
   for (int c = 0; c < 4; ++c) tp.border[c] = border[c] * 255.0f, tp.env_color[c] = unit.env_color[c];
   tp.env = unit.env;
+  tp.combine = unit.combine;
   tp.format = t->format;
   return tp;
 }
@@ -131,9 +132,11 @@ void make_plan(DrawJob& job) {
   p.writes_color = writes_color(frag);
   p.scalar_fragments = frag.capture || (p.phong && (shadows || !simd_materials));
   p.textured = false;
+  p.combine = false;
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     p.texture[u] = texture_plan(shade.textures[std::size_t(u)]);
     p.textured = p.textured || p.texture[u].texture;
+    p.combine = p.combine || (p.texture[u].texture && p.texture[u].env == TextureEnvMode::kCombine);
   }
   p.fog = shade.fog.enabled;
   if (p.fog) p.fog_params = detail::fog_params(shade.fog);

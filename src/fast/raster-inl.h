@@ -144,24 +144,43 @@ HWY_INLINE Rgba textured_color(const DrawJob& job, const TriSetup& t, const Tria
   Rgba color;
   // The environment may replace the fragment's alpha with the texel's: its own alpha is then
   // not needed as the reference computes it.
+  // (Not with GL_COMBINE, which may read the primary colour again.)
   bool alpha_replaced = false;  // by some unit (the later ones combine the texel's alpha)
   for (const TexturePlan& tp : job.plan.texture) {
     alpha_replaced = alpha_replaced || (tp.texture && tp.env == TextureEnvMode::kReplace &&
                                         tp.format != TextureFormat::kLuminance && tp.format != TextureFormat::kRgb);
   }
+  alpha_replaced = alpha_replaced && !job.plan.combine;
   const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform &&
                      (job.frag->logic_op.enabled || !alpha_replaced);
-  const bool exact_all = exact && job.frag->logic_op.enabled;
+  // (GL_COMBINE's dot products make alpha from the colour: every channel exact then.)
+  const bool exact_all = exact && (job.frag->logic_op.enabled || job.plan.combine);
   if (job.plan.phong) {
     color = phong_color(job, t, planes, w, secondary);
   } else {
     color = vertex_color(t, planes, w, false);
     if (exact && !t.flat) exact_color(t, planes, w, exact_all ? 0 : 3, color, false);
   }
+  // Every unit's texels first (a GL_COMBINE environment may read another unit's; zero where a
+  // unit has no texture), then the environments in order (draw.cpp's shade_fragment).
+  VB texels[kMaxTextureUnits][4];
+  const MB live = block_mask(at.live);
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     if (job.plan.texture[u].texture) {
-      texture_block(job, u, t, planes.texcoord[u], w, at.x, at.y, at.e, block_mask(at.live), color.c);
+      sample_block(job, u, t, planes.texcoord[u], w, at.x, at.y, at.e, live, texels[u]);
+    } else if (job.plan.combine) {
+      for (VB& v : texels[u]) v = hn::Zero(DB());
     }
+  }
+  VB primary[4];
+  if (job.plan.combine) {
+    for (int k = 0; k < 4; ++k) primary[k] = color.c[k];
+  }
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    const TexturePlan& tp = job.plan.texture[u];
+    if (!tp.texture) continue;
+    if (tp.env == TextureEnvMode::kCombine) texture_combine(tp, u, color.c, texels, primary);
+    else texture_env(tp, color.c, texels[u]);
   }
   color.clamped = false;
   if (!job.plan.phong && !planes.has_secondary) return color;

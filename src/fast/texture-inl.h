@@ -485,11 +485,94 @@ HWY_INLINE void texture_env(const TexturePlan& tp, VB f[4], const VB t[4]) {
   }
 }
 
-/// The block's fragments textured by texture unit `unit`: `color` (the previous unit's, or the
-/// primary colour, unclamped) combined with the texel at each lane's coordinates. `e` are the
-/// rows' edge values, `w` their perspective weights; `live` the lanes whose colour is used.
-HWY_INLINE void texture_block(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
-                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB color[4]) {
+/// texture.cpp's saturate: [0, 1], NaN to 0.
+HWY_INLINE VB saturate(VB v) {
+  const DB db;
+  const VB zero = hn::Zero(db), one = hn::Set(db, 1.0f);
+  return hn::IfThenElse(hn::Gt(v, zero), hn::IfThenElse(hn::Lt(v, one), v, one), zero);
+}
+
+/// apply_texture_combine (texture.cpp) lane by lane, operation by operation: unit `unit`'s
+/// GL_COMBINE environment over every unit's texel `texels` (zero without a texture), the
+/// primary colour `primary` and the previous unit's colour `f`, which it replaces.
+HWY_INLINE void texture_combine(const TexturePlan& tp, int unit, VB f[4], const VB texels[kMaxTextureUnits][4],
+                                const VB primary[4]) {
+  const DB db;
+  const TextureCombine& c = tp.combine;
+  const VB one = hn::Set(db, 1.0f), half = hn::Set(db, 0.5f), two = hn::Set(db, 2.0f);
+  VB constant[4];
+  for (int k = 0; k < 4; ++k) constant[k] = hn::Set(db, tp.env_color[k]);
+  auto source = [&](CombineSource s) -> const VB* {
+    switch (s) {
+      case CombineSource::kTexture: return texels[unit];
+      case CombineSource::kConstant: return constant;
+      case CombineSource::kPrimaryColor: return primary;
+      case CombineSource::kPrevious: return f;
+      default: return texels[int(s) - int(CombineSource::kTexture0)];
+    }
+  };
+  auto operand = [&](CombineOperand o, const VB* v, int k) {
+    switch (o) {
+      case CombineOperand::kSrcColor: return v[k];
+      case CombineOperand::kOneMinusSrcColor: return hn::Sub(one, v[k]);
+      case CombineOperand::kSrcAlpha: return v[3];
+      case CombineOperand::kOneMinusSrcAlpha: return hn::Sub(one, v[3]);
+    }
+    return v[k];
+  };
+  auto function = [&](CombineFunction fn, VB a0, VB a1, VB a2) {
+    switch (fn) {
+      case CombineFunction::kReplace: return a0;
+      case CombineFunction::kModulate: return hn::Mul(a0, a1);
+      case CombineFunction::kAdd: return hn::Add(a0, a1);
+      case CombineFunction::kAddSigned: return hn::Sub(hn::Add(a0, a1), half);
+      case CombineFunction::kInterpolate: return hn::Add(hn::Mul(a0, a2), hn::Mul(a1, hn::Sub(one, a2)));
+      case CombineFunction::kSubtract: return hn::Sub(a0, a1);
+      default: return a0;
+    }
+  };
+  auto clamps = [](CombineFunction fn) {
+    return fn != CombineFunction::kReplace && fn != CombineFunction::kModulate && fn != CombineFunction::kInterpolate;
+  };
+  auto finish = [&](VB v, float scale, bool clamp) {
+    if (scale != 1.0f) return saturate(hn::Mul(v, hn::Set(db, scale)));
+    return clamp ? saturate(v) : v;
+  };
+  const VB* rs[3] = {source(c.rgb_source[0]), source(c.rgb_source[1]), source(c.rgb_source[2])};
+  const VB* as[3] = {source(c.alpha_source[0]), source(c.alpha_source[1]), source(c.alpha_source[2])};
+  VB out[4];
+  if (c.rgb == CombineFunction::kDot3Rgb || c.rgb == CombineFunction::kDot3Rgba) {
+    VB p[3];
+    for (int k = 0; k < 3; ++k) {
+      const VB a0 = hn::Sub(hn::Mul(operand(c.rgb_operand[0], rs[0], k), two), one);
+      const VB a1 = hn::Sub(hn::Mul(operand(c.rgb_operand[1], rs[1], k), two), one);
+      p[k] = hn::Mul(a0, a1);
+    }
+    const VB product = hn::Add(hn::Add(p[0], p[1]), p[2]);
+    out[0] = out[1] = out[2] = finish(product, c.rgb_scale, true);
+    if (c.rgb == CombineFunction::kDot3Rgba) out[3] = finish(product, c.alpha_scale, true);
+  } else {
+    for (int k = 0; k < 3; ++k) {
+      const VB v = function(c.rgb, operand(c.rgb_operand[0], rs[0], k), operand(c.rgb_operand[1], rs[1], k),
+                            operand(c.rgb_operand[2], rs[2], k));
+      out[k] = finish(v, c.rgb_scale, clamps(c.rgb));
+    }
+  }
+  if (c.rgb != CombineFunction::kDot3Rgba) {
+    auto alpha = [&](int i) {
+      return c.alpha_operand[i] == CombineOperand::kOneMinusSrcAlpha || c.alpha_operand[i] == CombineOperand::kOneMinusSrcColor
+                 ? hn::Sub(one, as[i][3]) : as[i][3];
+    };
+    out[3] = finish(function(c.alpha, alpha(0), alpha(1), alpha(2)), c.alpha_scale, clamps(c.alpha));
+  }
+  for (int k = 0; k < 4; ++k) f[k] = out[k];
+}
+
+/// The filtered texels of texture unit `unit` for the block's fragments, at each lane's
+/// coordinates. `e` are the rows' edge values, `w` their perspective weights; `live` the lanes
+/// whose colour is used.
+HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
+                             const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB texel[4]) {
   const DB db;
   const TexturePlan& tp = job.plan.texture[unit];
   VB s, tc, r = hn::Zero(db);
@@ -499,9 +582,7 @@ HWY_INLINE void texture_block(const DrawJob& job, int unit, const TriSetup& t, c
     d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc, r, tp.three_d)
                                               : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
-  VB texel[4];
   sample_texture(tp, s, tc, r, tp.lod ? &d : nullptr, live, texel);
-  texture_env(tp, color, texel);
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE

@@ -159,8 +159,9 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     lit.secondary = get3(a, front ? kFrontSecondary : kBackSecondary);
   }
   glm::vec4 color = lit.primary;
-  // GL 1.3 section 3.8.13: the units in order, each combining its texel with the colour the
-  // unit before it gave (a unit without a texture passes it on).
+  // Every unit's texel first (a GL_COMBINE environment may read another unit's: GL 1.4's
+  // crossbar; zero where a unit has no texture).
+  std::array<glm::vec4, kMaxTextureUnits> texels{};
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     const TextureUnit& unit = shade.textures[std::size_t(u)];
     if (!unit.texture) continue;
@@ -171,8 +172,18 @@ glm::vec4 detail::shade_fragment(const ShadeState& shade, const Fragment& f, boo
     const float q = a[std::size_t(k + 3)];
     const glm::vec3 str(finite_texcoord(a[std::size_t(k)] / q), finite_texcoord(a[std::size_t(k + 1)] / q),
                         finite_texcoord(a[std::size_t(k + 2)] / q));
-    glm::vec4 texel = sample_texture(t, str, texture_rho2(t, f.texture_derivatives[std::size_t(u)]), unit.lod_bias);
-    color = apply_texture_env(unit.env, t.format, color, texel, unit.env_color);
+    texels[std::size_t(u)] = sample_texture(t, str, texture_rho2(t, f.texture_derivatives[std::size_t(u)]), unit.lod_bias);
+  }
+  // GL 1.3 section 3.8.13: the units in order, each combining its texel with the colour the
+  // unit before it gave (a unit without a texture passes it on).
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    const TextureUnit& unit = shade.textures[std::size_t(u)];
+    if (!unit.texture) continue;
+    if (unit.env == TextureEnvMode::kCombine) {
+      color = apply_texture_combine(unit.combine, {texels.data(), u, unit.env_color, lit.primary, color});
+    } else {
+      color = apply_texture_env(unit.env, unit.texture->format, color, texels[std::size_t(u)], unit.env_color);
+    }
   }
   // Colour sum (GL 1.4 section 3.9): the secondary colour is added after texturing, unclamped
   // (Mesa's fixed-function fragment program adds it without saturating).

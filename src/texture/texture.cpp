@@ -340,4 +340,86 @@ glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm
   return f;
 }
 
+namespace {
+
+glm::vec4 combine_source(CombineSource s, const CombineInputs& in) {
+  switch (s) {
+    case CombineSource::kTexture: return in.texels[in.unit];
+    case CombineSource::kConstant: return in.constant;
+    case CombineSource::kPrimaryColor: return in.primary;
+    case CombineSource::kPrevious: return in.previous;
+    default: return in.texels[int(s) - int(CombineSource::kTexture0)];
+  }
+}
+
+// An operand's three colour components (or its alpha three times).
+glm::vec3 rgb_operand(CombineOperand o, const glm::vec4& v) {
+  switch (o) {
+    case CombineOperand::kSrcColor: return glm::vec3(v);
+    case CombineOperand::kOneMinusSrcColor: return glm::vec3(1.0f) - glm::vec3(v);
+    case CombineOperand::kSrcAlpha: return glm::vec3(v.a);
+    case CombineOperand::kOneMinusSrcAlpha: return glm::vec3(1.0f - v.a);
+  }
+  return glm::vec3(v);
+}
+
+float alpha_operand(CombineOperand o, const glm::vec4& v) {
+  return o == CombineOperand::kOneMinusSrcAlpha || o == CombineOperand::kOneMinusSrcColor ? 1.0f - v.a : v.a;
+}
+
+template <class T>
+T combine_function(CombineFunction f, const T& a0, const T& a1, const T& a2) {
+  switch (f) {
+    case CombineFunction::kReplace: return a0;
+    case CombineFunction::kModulate: return a0 * a1;
+    case CombineFunction::kAdd: return a0 + a1;
+    case CombineFunction::kAddSigned: return a0 + a1 - T(0.5f);
+    case CombineFunction::kInterpolate: return a0 * a2 + a1 * (T(1.0f) - a2);
+    case CombineFunction::kSubtract: return a0 - a1;
+    default: return a0;  // the dot products: apply_texture_combine's
+  }
+}
+
+bool needs_clamp(CombineFunction f) {
+  return f != CombineFunction::kReplace && f != CombineFunction::kModulate && f != CombineFunction::kInterpolate;
+}
+
+float saturate(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+// The scale, then the clamp Mesa applies (after scaling, or after the functions that need it).
+float finish(float v, float scale, bool clamp) {
+  if (scale != 1.0f) return saturate(v * scale);
+  return clamp ? saturate(v) : v;
+}
+
+}  // namespace
+
+glm::vec4 apply_texture_combine(const TextureCombine& c, const CombineInputs& in) {
+  glm::vec3 a[3];
+  float b[3];
+  for (int i = 0; i < 3; ++i) {
+    a[i] = rgb_operand(c.rgb_operand[i], combine_source(c.rgb_source[i], in));
+    b[i] = alpha_operand(c.alpha_operand[i], combine_source(c.alpha_source[i], in));
+  }
+  glm::vec3 rgb;
+  const bool dot = c.rgb == CombineFunction::kDot3Rgb || c.rgb == CombineFunction::kDot3Rgba;
+  float product = 0.0f;
+  if (dot) {  // (2 a0 - 1) . (2 a1 - 1), Mesa's form of 4 ((r0 - 0.5)(r1 - 0.5) + ...)
+    const glm::vec3 p = (a[0] * 2.0f - glm::vec3(1.0f)) * (a[1] * 2.0f - glm::vec3(1.0f));
+    product = (p.x + p.y) + p.z;
+    rgb = glm::vec3(product);
+  } else {
+    rgb = combine_function(c.rgb, a[0], a[1], a[2]);
+  }
+  const bool clamp_rgb = needs_clamp(c.rgb);
+  glm::vec4 out(finish(rgb.r, c.rgb_scale, clamp_rgb), finish(rgb.g, c.rgb_scale, clamp_rgb),
+                finish(rgb.b, c.rgb_scale, clamp_rgb), 0.0f);
+  if (c.rgb == CombineFunction::kDot3Rgba) {
+    out.a = finish(product, c.alpha_scale, true);  // alpha scaled by GL_ALPHA_SCALE (Mesa's)
+  } else {
+    out.a = finish(combine_function(c.alpha, b[0], b[1], b[2]), c.alpha_scale, needs_clamp(c.alpha));
+  }
+  return out;
+}
+
 }  // namespace shadelab

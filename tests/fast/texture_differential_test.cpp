@@ -83,6 +83,25 @@ struct TexturedScene {
   bool exact = false;  // the texel is the colour: pictures must be identical
 };
 
+// A GL_COMBINE environment of random functions, sources (the crossbar's other units too),
+// operands and scales.
+template <class Pick>
+TextureCombine random_combine(Pick& pick) {
+  TextureCombine c;
+  c.rgb = CombineFunction(pick(0, 7));
+  c.alpha = CombineFunction(pick(0, 5));
+  for (int i = 0; i < 3; ++i) {
+    c.rgb_source[i] = CombineSource(pick(0, 7));
+    c.alpha_source[i] = CombineSource(pick(0, 7));
+    c.rgb_operand[i] = CombineOperand(pick(0, 3));
+    c.alpha_operand[i] = CombineOperand(pick(2, 3));
+  }
+  const float scales[3] = {1.0f, 2.0f, 4.0f};
+  c.rgb_scale = scales[pick(0, 2)];
+  c.alpha_scale = scales[pick(0, 2)];
+  return c;
+}
+
 // A floor receding to the horizon, a wall turned away, or a face-on quad, with texture
 // coordinates repeated up to 64 times (or a few texels magnified), projective sometimes.
 TexturedScene textured_scene(unsigned seed) {
@@ -141,7 +160,8 @@ TexturedScene textured_scene(unsigned seed) {
       d.texture->format = TextureFormat::kRgba;
       unit.env = TextureEnvMode::kReplace;
     } else {
-      unit.env = TextureEnvMode(pick(0, 4));
+      unit.env = TextureEnvMode(pick(0, 5));
+      if (unit.env == TextureEnvMode::kCombine) unit.combine = random_combine(pick);
       if (pick(0, 2) == 0) {  // a second unit (multitexture) over the first, at unit 1 to 3
         d.second_unit = pick(1, kMaxTextureUnits - 1);
         const int kind2 = pick(0, 5);
@@ -153,7 +173,8 @@ TexturedScene textured_scene(unsigned seed) {
         }
         TextureUnit& second = d.shade.textures[std::size_t(d.second_unit)];
         second.texture = d.texture2.get();
-        second.env = TextureEnvMode(pick(0, 4));
+        second.env = TextureEnvMode(pick(0, 5));
+        if (second.env == TextureEnvMode::kCombine) second.combine = random_combine(pick);
         second.env_color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
         if (pick(0, 3) == 0) second.lod_bias = real(-3.0f, 3.0f);
       }

@@ -307,6 +307,49 @@ TEST(Texture, EnvironmentModes) {
   glm::vec4 b = apply_texture_env(TextureEnvMode::kBlend, TextureFormat::kRgba, frag, tex, env);
   EXPECT_NEAR(b.r, 0.5f * 0.8f + 1.0f * 0.2f, 1e-6);
   EXPECT_NEAR(b.g, 0.5f * 0.6f, 1e-6);
+  // GL_ADD: colours summed and saturated; an RGBA texture's alpha modulates.
+  glm::vec4 a = apply_texture_env(TextureEnvMode::kAdd, TextureFormat::kRgba, frag, tex, env);
+  EXPECT_NEAR(a.r, 0.7f, 1e-6);
+  EXPECT_EQ(a.b, 1.0f);
+  EXPECT_NEAR(a.a, 0.4f, 1e-6);
+}
+
+// GL 1.3's GL_COMBINE: the functions of table 3.24 over their sources and operands, the
+// scales and clamps, the dot products and the crossbar's other units.
+TEST(Texture, CombineEnvironment) {
+  const glm::vec4 texels[kMaxTextureUnits] = {{0.2f, 0.4f, 0.6f, 0.5f}, {0.9f, 0.1f, 0.5f, 0.25f}, {}, {}};
+  const CombineInputs in{texels, 0, {1.0f, 0.5f, 0.0f, 0.75f}, {0.3f, 0.3f, 0.3f, 1.0f}, {0.5f, 0.6f, 0.7f, 0.8f}};
+  TextureCombine c;  // the defaults: texture times previous, colour and alpha
+  glm::vec4 v = apply_texture_combine(c, in);
+  EXPECT_NEAR(v.r, 0.1f, 1e-6);
+  EXPECT_NEAR(v.a, 0.4f, 1e-6);
+  c.rgb = CombineFunction::kAddSigned;  // 0.2 + 0.5 - 0.5, times 4
+  c.rgb_scale = 4.0f;
+  v = apply_texture_combine(c, in);
+  EXPECT_NEAR(v.r, 0.8f, 1e-6);
+  EXPECT_EQ(v.g, 1.0f);  // (0.4 + 0.6 - 0.5) * 4 clamped
+  c = TextureCombine{};
+  c.rgb = CombineFunction::kInterpolate;  // texture * constant.a + previous * (1 - constant.a)
+  c.rgb_operand[2] = CombineOperand::kSrcAlpha;
+  v = apply_texture_combine(c, in);
+  EXPECT_NEAR(v.b, 0.6f * 0.75f + 0.7f * 0.25f, 1e-6);
+  c = TextureCombine{};
+  c.rgb = CombineFunction::kSubtract;  // primary - texture 1 (the crossbar), clamped at 0
+  c.rgb_source[0] = CombineSource::kPrimaryColor;
+  c.rgb_source[1] = CombineSource::kTexture1;
+  c.alpha = CombineFunction::kReplace;
+  c.alpha_operand[0] = CombineOperand::kOneMinusSrcAlpha;
+  v = apply_texture_combine(c, in);
+  EXPECT_EQ(v.r, 0.0f);
+  EXPECT_NEAR(v.g, 0.2f, 1e-6);
+  EXPECT_NEAR(v.a, 0.5f, 1e-6);
+  c = TextureCombine{};
+  c.rgb = CombineFunction::kDot3Rgba;  // (2 t0 - 1) . (2 t1 - 1) in every component
+  c.rgb_source[1] = CombineSource::kTexture1;
+  v = apply_texture_combine(c, in);
+  const float dot = (0.4f - 1.0f) * (1.8f - 1.0f) + (0.8f - 1.0f) * (0.2f - 1.0f) + (1.2f - 1.0f) * (1.0f - 1.0f);
+  EXPECT_NEAR(v.r, dot > 0.0f ? dot : 0.0f, 1e-6);
+  EXPECT_EQ(v.a, v.r);
 }
 
 }  // namespace
