@@ -16,6 +16,7 @@
 #include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
+#include "gl/src/texgen.hpp"
 #include "shadelab/lighting.hpp"
 
 namespace shadelab::gl {
@@ -101,7 +102,13 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
                                                         : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
-  r.texcoord = transform(c.texture_matrix.top(), c.current.texcoord);
+  // Texture coordinates are generated as a vertex's (section 2.12), GL 1.3's cube-map modes too.
+  glm::vec4 tc = c.current.texcoord;
+  if (c.textures.any_texgen()) {
+    const glm::vec3 n = texgen_needs_normal(c.textures) ? eye_normal(c, modelview) : glm::vec3(0.0f);
+    tc = generate_texcoords(c.textures, tc, object, eye, n);
+  }
+  r.texcoord = transform(c.texture_matrix.top(), tc);
   select_raster_position(c);
 }
 
