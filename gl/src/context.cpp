@@ -16,11 +16,13 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   }
   // GL's default back material equals the front one; both are Material's defaults.
   // Each target's default texture (name 0), with the target's dimensions.
-  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D}) {
+  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}) {
     TextureBinding& b = textures.binding(target);
     b.default_object = std::make_shared<TextureObject>();
     b.default_object->target = target;
     b.default_object->texture.dimensions = texture_dimensions(target);
+    b.default_object->texture.cube_map = target == GL_TEXTURE_CUBE_MAP;
+    if (target == GL_TEXTURE_CUBE_MAP) b.default_object->faces.resize(6);
     b.object = b.default_object;
   }
   textures.names = share ? share->textures.names : std::make_shared<TextureNames>();
