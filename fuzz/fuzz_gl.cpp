@@ -98,6 +98,11 @@ class Input {
         GL_GENERATE_MIPMAP_HINT, GL_TEXTURE_3D, GL_PROXY_TEXTURE_3D, GL_TEXTURE_BINDING_3D,
         GL_MAX_3D_TEXTURE_SIZE, GL_TEXTURE_DEPTH, GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES,
         GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES,
+        // GL 1.3 cube maps and their texture generation modes.
+        GL_TEXTURE_CUBE_MAP, GL_TEXTURE_CUBE_MAP_POSITIVE_X, GL_TEXTURE_CUBE_MAP_NEGATIVE_X,
+        GL_TEXTURE_CUBE_MAP_POSITIVE_Y, GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, GL_TEXTURE_CUBE_MAP_POSITIVE_Z,
+        GL_TEXTURE_CUBE_MAP_NEGATIVE_Z, GL_PROXY_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP,
+        GL_MAX_CUBE_MAP_TEXTURE_SIZE, GL_NORMAL_MAP, GL_REFLECTION_MAP,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }
@@ -473,6 +478,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                         in.any_enum(), in.any_enum(), b->pixels);
         glCopyTexSubImage3D(GL_TEXTURE_3D, in.small(-1, 3), in.small(-2, 4), in.small(-2, 4), in.small(-2, 3),
                             in.small(-20, kSize), in.small(-20, kSize), in.small(-1, 4), in.small(-1, 4));
+        {  // a cube map's faces (GL 1.3), square or not, and the cube map enabled
+          glBindTexture(GL_TEXTURE_CUBE_MAP, in.byte() % 4);
+          const int side = in.small(-1, 4);
+          glTexImage2D(GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + in.byte() % 7), in.small(-1, 3), GLint(in.any_enum()),
+                       side, in.byte() % 4 ? side : in.small(-1, 4), in.small(0, 1), in.any_enum(), in.any_enum(),
+                       in.byte() % 8 ? b->pixels : nullptr);
+          if (in.byte() % 2) glEnable(GL_TEXTURE_CUBE_MAP);
+        }
         break;
       case 61:  // copies from the framebuffer, inside it or not
         glCopyTexImage2D(in.any_enum(), in.small(-1, 4), in.any_enum(), in.small(-20, kSize), in.small(-20, kSize),

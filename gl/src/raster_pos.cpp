@@ -16,6 +16,7 @@
 #include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 #include "gl/src/convert.hpp"
+#include "gl/src/texgen.hpp"
 #include "shadelab/lighting.hpp"
 
 namespace shadelab::gl {
@@ -101,8 +102,16 @@ void raster_pos(GlContext& c, double x, double y, double z, double w) {
   r.distance = c.fog.coord_source == GL_FOG_COORDINATE ? c.current.fog_coord
                                                         : std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z);
   set_color(c, eye, modelview);
-  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // GL 1.3: every unit's, through its matrix
-    r.texcoords[u] = transform(c.texture_matrices[u].top(), c.current.texcoords[u]);
+  // Every unit's texture coordinates, generated as a vertex's (section 2.12; GL 1.3's cube-map
+  // modes too), through the unit's texture matrix.
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+    const TextureUnitState& unit = c.textures.units[u];
+    glm::vec4 tc = c.current.texcoords[u];
+    if (unit.any_texgen()) {
+      const glm::vec3 n = texgen_needs_normal(unit) ? eye_normal(c, modelview) : glm::vec3(0.0f);
+      tc = generate_texcoords(unit, tc, object, eye, n);
+    }
+    r.texcoords[u] = transform(c.texture_matrices[u].top(), tc);
   }
   select_raster_position(c);
 }

@@ -58,33 +58,37 @@ void store_inside(const RgbaImage& image, const std::vector<std::uint8_t>& insid
 // glCopyTexImage1D (dims 1, height 1) and glCopyTexImage2D.
 void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum internal, GLint x, GLint y,
                     GLsizei width, GLsizei height, GLint border) {
-  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
+  const bool cube = dims == 2 && is_cube_face(target);  // GL 1.3: a cube map's face, square
+  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D) && !cube) return c.set_error(GL_INVALID_ENUM);
   if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
   if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
   StoredFormat stored;  // the unsized 1 .. 4 are not accepted here (GL 1.1 section 3.8.2)
   if (internal <= 4 || !stored_format(GLint(internal), stored)) return c.set_error(GL_INVALID_ENUM);
   const long max = long(kMaxTextureSize) >> level;
   auto legal = [&](int size) { return size >= 2 * border && long(size) <= 2 * border + max; };
-  if (!legal(width) || (dims == 2 && !legal(height))) return c.set_error(GL_INVALID_VALUE);
+  if (!legal(width) || (dims == 2 && !legal(height)) || (cube && width != height)) return c.set_error(GL_INVALID_VALUE);
   // The border is stripped, as glTexImage strips it.
   const bool strip_rows = dims == 2 && border && height >= 3;
   const int inner_w = width - 2 * border, inner_h = strip_rows ? height - 2 : height;
   std::vector<std::uint8_t> inside;
   RgbaImage image = read_framebuffer(c, x + border, y + (strip_rows ? 1 : 0), inner_w, inner_h, inside);
-  TextureObject& t = *bound_texture(c, target);
+  TextureObject& t = *image_texture(c, target);
   texture_changing(c, t);
   define_level(t, level, GLint(internal), inner_w, inner_h);
   store_inside(image, inside, 0, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
-  level_changed(t, level);
+  image_changed(c, target, t, level);
 }
 
 // glCopyTexSubImage1D (dims 1), glCopyTexSubImage2D and glCopyTexSubImage3D (into image
 // zoffset).
 void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint xoffset, GLint yoffset,
                         GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
-  if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D)) return c.set_error(GL_INVALID_ENUM);
+  if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D) &&
+      !(dims == 2 && is_cube_face(target))) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
   if (level < 0 || level >= (dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels)) return c.set_error(GL_INVALID_VALUE);
-  TextureObject& t = *bound_texture(c, target);
+  TextureObject& t = *image_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
     return c.set_error(GL_INVALID_OPERATION);
   }
@@ -99,7 +103,7 @@ void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLin
   RgbaImage image = read_framebuffer(c, x, y, width, height, inside);
   texture_changing(c, t);
   store_inside(image, inside, xoffset, yoffset, zoffset, img, t.texture.levels[std::size_t(level)]);
-  level_changed(t, level);
+  image_changed(c, target, t, level);
 }
 
 }  // namespace

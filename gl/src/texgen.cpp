@@ -1,6 +1,7 @@
-// Texture coordinate generation (GL 1.1 section 2.10.4): glTexGen{i,f,d}[v],
-// glGetTexGen{i,f,d}v, and the generated coordinates of a vertex (object linear, eye linear
-// with the eye plane taken through the inverse modelview of the call, sphere map), which
+// Texture coordinate generation (GL 1.1 section 2.10.4; GL 1.3's modes of section 2.10.4):
+// glTexGen{i,f,d}[v], glGetTexGen{i,f,d}v, and the generated coordinates of a vertex (object
+// linear, eye linear with the eye plane taken through the inverse modelview of the call, sphere
+// map, GL 1.3's normal map and reflection map for cube maps), which
 // draw.cpp and array_mesh.cpp compute per vertex before the texture matrix. Errors are Mesa's
 // (texgen.c).
 #include "gl/src/texgen.hpp"
@@ -38,7 +39,9 @@ void tex_gen(GlContext& c, GLenum coord, GLenum pname, const float* v) {
     case GL_TEXTURE_GEN_MODE: {
       const GLint mode = std::isfinite(v[0]) && std::fabs(v[0]) < 2e9f ? GLint(v[0]) : 0;
       const bool sphere_ok = i < 2;  // GL_SPHERE_MAP generates s and t only
-      if (mode != GL_OBJECT_LINEAR && mode != GL_EYE_LINEAR && !(mode == GL_SPHERE_MAP && sphere_ok)) {
+      const bool cube_ok = i < 3;    // GL 1.3: GL_NORMAL_MAP and GL_REFLECTION_MAP s, t and r
+      if (mode != GL_OBJECT_LINEAR && mode != GL_EYE_LINEAR && !(mode == GL_SPHERE_MAP && sphere_ok) &&
+          !((mode == GL_NORMAL_MAP || mode == GL_REFLECTION_MAP) && cube_ok)) {
         return c.set_error(GL_INVALID_ENUM);
       }
       g.mode = GLenum(mode);
@@ -90,13 +93,18 @@ void get_tex_gen(GlContext& c, GLenum coord, GLenum pname, T* params) {
   }
 }
 
-// GL 1.1 section 2.10.4's sphere map: the eye-space reflection of the direction from the eye
-// through the vertex, mapped onto the unit disc centred at (0.5, 0.5).
-glm::vec2 sphere_map(const glm::vec4& eye, const glm::vec3& normal) {
+// The eye-space reflection of the direction from the eye through the vertex, r = u - 2 n (n . u)
+// (GL 1.3 section 2.10.4: GL_REFLECTION_MAP's (s, t, r), and what GL_SPHERE_MAP maps).
+glm::vec3 reflection(const glm::vec4& eye, const glm::vec3& normal) {
   glm::vec3 u(eye);
   const float len = glm::length(u);
   if (len > 0.0f) u /= len;
-  const glm::vec3 r = u - 2.0f * normal * glm::dot(normal, u);
+  return u - 2.0f * normal * glm::dot(normal, u);
+}
+
+// GL 1.1 section 2.10.4's sphere map: the reflection mapped onto the unit disc centred at
+// (0.5, 0.5).
+glm::vec2 sphere_map(const glm::vec3& r) {
   const float m = 2.0f * std::sqrt(r.x * r.x + r.y * r.y + (r.z + 1.0f) * (r.z + 1.0f));
   if (!(m > 0.0f)) return glm::vec2(0.5f);
   return glm::vec2(r.x / m + 0.5f, r.y / m + 0.5f);
@@ -105,19 +113,25 @@ glm::vec2 sphere_map(const glm::vec4& eye, const glm::vec3& normal) {
 }  // namespace
 
 bool texgen_needs_normal(const TextureUnitState& t) {
-  return (t.gen[0].enabled && t.gen[0].mode == GL_SPHERE_MAP) || (t.gen[1].enabled && t.gen[1].mode == GL_SPHERE_MAP);
+  for (const TexGenCoord& g : t.gen) {
+    if (g.enabled && (g.mode == GL_SPHERE_MAP || g.mode == GL_NORMAL_MAP || g.mode == GL_REFLECTION_MAP)) return true;
+  }
+  return false;
 }
 
 glm::vec4 generate_texcoords(const TextureUnitState& t, glm::vec4 current, const glm::vec4& object, const glm::vec4& eye,
                              const glm::vec3& eye_normal) {
+  glm::vec3 r(0.0f);
   glm::vec2 sphere(0.0f);
-  if (texgen_needs_normal(t)) sphere = sphere_map(eye, eye_normal);
+  if (texgen_needs_normal(t)) r = reflection(eye, eye_normal), sphere = sphere_map(r);
   for (int i = 0; i < 4; ++i) {
     const TexGenCoord& g = t.gen[std::size_t(i)];
     if (!g.enabled) continue;
     switch (g.mode) {
       case GL_OBJECT_LINEAR: current[i] = glm::dot(g.object_plane, object); break;
       case GL_EYE_LINEAR: current[i] = glm::dot(g.eye_plane, eye); break;
+      case GL_NORMAL_MAP: current[i] = eye_normal[i]; break;   // s, t, r only
+      case GL_REFLECTION_MAP: current[i] = r[i]; break;        // s, t, r only
       default: current[i] = sphere[i]; break;  // GL_SPHERE_MAP, s and t only
     }
   }

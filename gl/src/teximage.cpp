@@ -44,16 +44,21 @@ bool legal_size(int size, int border, int level, int dims) {
   return size >= 2 * border && long(size) <= 2 * border + max;
 }
 
-// llvmpipe makes no texture of more than 1 GiB (LP_MAX_TEXTURE_SIZE): a 3D image past it is
-// GL_OUT_OF_MEMORY (a proxy: not made).
+// llvmpipe makes no texture of more than 1 GiB (LP_MAX_TEXTURE_SIZE): a 3D image past it, or
+// a cube map's face whose six faces would be, is GL_OUT_OF_MEMORY (a proxy: not made).
 bool fits_in_memory(int width, int height, int depth) {
   return double(width) * double(height) * double(depth) * 4.0 <= double(1u << 30);
 }
 
 std::vector<TexImage>& proxy_images(GlContext& c, GLenum target) {
+  if (target == GL_PROXY_TEXTURE_CUBE_MAP) return c.textures.proxy_cube;
   return target == GL_PROXY_TEXTURE_1D ? c.textures.proxy_1d
                                        : target == GL_PROXY_TEXTURE_3D ? c.textures.proxy_3d : c.textures.proxy_2d;
 }
+
+// glTexImage2D's and glCopyTexImage2D's targets besides GL_TEXTURE_2D: a cube map's faces
+// (GL 1.3), whose images are square (Mesa's _mesa_legal_texture_dimensions).
+bool is_cube_target(GLenum target) { return is_cube_face(target) || target == GL_PROXY_TEXTURE_CUBE_MAP; }
 
 // A proxy's level as glTexImage would have made it (sizes as given, border kept), or cleared
 // when the image could not be made.
@@ -98,8 +103,10 @@ int max_levels(int dims) { return dims == 3 ? kMax3dTextureLevels : kMaxTextureL
 void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint internal, GLsizei width, GLsizei height,
                GLsizei depth, GLint border, GLenum format, GLenum type, const void* pixels) {
   const GLenum plain = plain_target(dims);
-  const GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : dims == 3 ? GL_PROXY_TEXTURE_3D : GL_PROXY_TEXTURE_2D;
-  if (target != plain && target != proxy) return c.set_error(GL_INVALID_ENUM);
+  GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : dims == 3 ? GL_PROXY_TEXTURE_3D : GL_PROXY_TEXTURE_2D;
+  const bool cube = dims == 2 && is_cube_target(target);
+  if (cube) proxy = GL_PROXY_TEXTURE_CUBE_MAP;
+  if (target != plain && target != proxy && !cube) return c.set_error(GL_INVALID_ENUM);
   if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
   if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
   if (width < 0 || height < 0 || depth < 0) return c.set_error(GL_INVALID_VALUE);
@@ -108,8 +115,8 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   if (!stored_format(internal, stored)) return c.set_error(GL_INVALID_VALUE);
   if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
   const bool legal = legal_size(width, border, level, dims) && (dims == 1 || legal_size(height, border, level, dims)) &&
-                     (dims < 3 || legal_size(depth, border, level, dims));
-  const bool fits = dims < 3 || fits_in_memory(width, height, depth);
+                     (dims < 3 || legal_size(depth, border, level, dims)) && (!cube || width == height);
+  const bool fits = cube ? fits_in_memory(width, height, 6) : dims < 3 || fits_in_memory(width, height, depth);
   if (target == proxy) return set_proxy(c, target, level, internal, width, height, depth, border, legal && fits);
   if (!legal) return c.set_error(GL_INVALID_VALUE);
   if (!fits) return c.set_error(GL_OUT_OF_MEMORY);
@@ -117,22 +124,22 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   const int inner_w = width - 2 * border;
   const bool strip_rows = dims >= 2 && border && height >= 3, strip_images = dims == 3 && border && depth >= 3;
   const int inner_h = strip_rows ? height - 2 : height, inner_d = strip_images ? depth - 2 : depth;
-  TextureObject& t = *bound_texture(c, target);
+  TextureObject& t = *image_texture(c, target);
   RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
                            inner_d, dims == 3, format, type, pixels);
   texture_changing(c, t);
   define_level(t, level, internal, inner_w, inner_h, inner_d);
   store_texels(image, 0, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
-  level_changed(t, level);
+  image_changed(c, target, t, level);
 }
 
 // glTexSubImage1D (dims 1), glTexSubImage2D and glTexSubImage3D.
 void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei width,
                    GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
-  if (target != plain_target(dims)) return c.set_error(GL_INVALID_ENUM);
+  if (target != plain_target(dims) && !(dims == 2 && is_cube_face(target))) return c.set_error(GL_INVALID_ENUM);
   if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
-  TextureObject& t = *bound_texture(c, target);
+  TextureObject& t = *image_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
     return c.set_error(GL_INVALID_OPERATION);
   }
@@ -147,7 +154,7 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
   texture_changing(c, t);
   store_texels(image, x, y, z, img, t.texture.levels[std::size_t(level)]);
-  level_changed(t, level);
+  image_changed(c, target, t, level);
 }
 
 // What a display list keeps of a client image (GL 1.1 section 5.4): its pixels as the unpack
@@ -281,7 +288,7 @@ void save::TexImage1D(GlContext& c, GLenum target, GLint level, GLint internalfo
 
 void save::TexImage2D(GlContext& c, GLenum target, GLint level, GLint internalformat, GLsizei width, GLsizei height,
                       GLint border, GLenum format, GLenum type, const void* pixels) {
-  if (target == GL_PROXY_TEXTURE_2D) {
+  if (target == GL_PROXY_TEXTURE_2D || target == GL_PROXY_TEXTURE_CUBE_MAP) {
     if (c.lists.mode == GL_COMPILE) {
       run::TexImage2D(c, target, level, internalformat, width, height, border, format, type, pixels);
     }

@@ -21,9 +21,10 @@ const std::vector<TexImage>* level_images(GlContext& c, GLenum target) {
   switch (target) {
     case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: return &bound_texture(c, target)->images;
     case GL_PROXY_TEXTURE_1D: return &c.textures.proxy_1d;
+    case GL_PROXY_TEXTURE_CUBE_MAP: return &c.textures.proxy_cube;
     case GL_PROXY_TEXTURE_2D: return &c.textures.proxy_2d;
     case GL_PROXY_TEXTURE_3D: return &c.textures.proxy_3d;
-    default: return nullptr;
+    default: return is_cube_face(target) ? &image_texture(c, target)->images : nullptr;  // GL 1.3
   }
 }
 
@@ -164,14 +165,16 @@ void pack_component(const Stored& s, GLenum type, bool swap, unsigned char* p) {
 }
 
 void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return c.set_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && !is_cube_face(target)) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
   if (level < 0 || level >= target_levels(target)) return c.set_error(GL_INVALID_VALUE);
   const bool known_format = color_format_components(format) != 0 || format == GL_COLOR_INDEX ||
                             format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
   if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
   if (const GLenum e = packed_format_error(format, type); e != GL_NO_ERROR) return c.set_error(e);
   if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) return c.set_error(GL_INVALID_OPERATION);
-  TextureObject& t = *bound_texture(c, target);
+  TextureObject& t = *image_texture(c, target);
   if (std::size_t(level) >= t.images.size() || !t.images[std::size_t(level)].defined || !pixels) return;
   if (format == GL_COLOR_INDEX) return;  // no index textures in an RGBA context: nothing is written
   const TexImage& img = t.images[std::size_t(level)];

@@ -225,11 +225,63 @@ const Texture* complete_texture(TextureObject& t) {
 }  // namespace
 
 TextureObject* bound_texture(GlContext& c, GLenum target) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return nullptr;
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
+    return nullptr;
+  }
   return c.textures.binding(target).object.get();
 }
 
-// GL 1.5 section 3.8.15: the 3D texture when enabled, else the 2D one, else the 1D one. Like
+TextureObject* image_texture(GlContext& c, GLenum target) {
+  if (!is_cube_face(target)) return target == GL_TEXTURE_CUBE_MAP ? nullptr : bound_texture(c, target);
+  TextureObject& cube = *c.textures.unit().binding_cube.object;
+  if (cube.faces.size() != 6) cube.faces.resize(6);
+  TextureObject& face = cube.faces[target - GL_TEXTURE_CUBE_MAP_POSITIVE_X];
+  face.generate_mipmap = cube.generate_mipmap;
+  face.texture.base_level = cube.texture.base_level;
+  face.texture.max_level = cube.texture.max_level;
+  return &face;
+}
+
+void image_changed(GlContext& c, GLenum target, TextureObject& t, int level) {
+  level_changed(t, level);
+  if (is_cube_face(target)) assemble_cube(*c.textures.unit().binding_cube.object);
+}
+
+// GL 1.3 section 3.8.10's cube completeness, level by level: the six faces defined, square,
+// of one size and one internal format (Mesa's _mesa_test_texobj_completeness).
+void assemble_cube(TextureObject& cube) {
+  std::size_t n = 0;
+  for (const TextureObject& f : cube.faces) n = std::max(n, f.images.size());
+  cube.images.assign(n, TexImage{});
+  cube.texture.levels.assign(n, TextureLevel{});
+  for (std::size_t l = 0; l < n; ++l) {
+    const TexImage* first = nullptr;
+    bool ok = cube.faces.size() == 6;
+    for (const TextureObject& f : cube.faces) {
+      if (f.images.size() <= l || !f.images[l].defined) { ok = false; break; }
+      const TexImage& im = f.images[l];
+      if (!first) first = &im;
+      if (im.width != im.height || im.width != first->width || im.internal_format != first->internal_format) ok = false;
+    }
+    if (!ok || first->width <= 0) continue;
+    TexImage& img = cube.images[l];
+    img.defined = true;
+    img.width = img.height = first->width, img.border = first->border;
+    img.internal_format = first->internal_format;
+    img.format = first->format;
+    TextureLevel& core = cube.texture.levels[l];
+    core.width = core.height = first->width, core.depth = 6;
+    core.rgba.reserve(std::size_t(first->width) * std::size_t(first->width) * 24);
+    for (const TextureObject& f : cube.faces) {
+      const std::vector<std::uint8_t>& face = f.texture.levels[l].rgba;
+      core.rgba.insert(core.rgba.end(), face.begin(), face.end());
+    }
+  }
+  if (!cube.images.empty() && cube.images[0].defined) cube.texture.format = cube.images[0].format.base;
+}
+
+// GL 1.5 section 3.8.15: the cube map when enabled, else the 3D texture, else the 2D one, else
+// the 1D one. Like
 // Mesa, an enabled target whose texture is incomplete gives way to the next enabled one.
 namespace {
 
@@ -247,6 +299,10 @@ TextureEnvMode env_mode(GLenum mode) {
 const Texture* unit_texture(GlContext& c, std::size_t unit, std::shared_ptr<const TextureObject>* object) {
   TextureUnitState& s = c.textures.units[unit];
   const Texture* t = nullptr;
+  if (s.enabled_cube && s.binding_cube.object && (t = complete_texture(*s.binding_cube.object))) {
+    if (object) *object = s.binding_cube.object;
+    return t;
+  }
   if (s.enabled_3d && s.binding_3d.object && (t = complete_texture(*s.binding_3d.object))) {
     if (object) *object = s.binding_3d.object;
     return t;
@@ -297,6 +353,9 @@ void texture_changing(GlContext& c, const TextureObject& t) {
   if (!c.pipeline || c.pipeline->deferred_draws() == 0) return;
   for (const std::shared_ptr<const TextureObject>& o : c.textures_of_waiting_draws) {
     if (o.get() == &t) return c.pipeline->finish_draws();
+    for (const TextureObject& face : o->faces) {  // a cube map's face
+      if (&face == &t) return c.pipeline->finish_draws();
+    }
   }
 }
 
@@ -320,7 +379,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
     if (textures[i] == 0) continue;
     c.textures.names->objects.erase(textures[i]);
     for (TextureUnitState& u : c.textures.units) {
-      for (TextureBinding* b : {&u.binding_1d, &u.binding_2d, &u.binding_3d}) {
+      for (TextureBinding* b : {&u.binding_1d, &u.binding_2d, &u.binding_3d, &u.binding_cube}) {
         if (b->name == textures[i]) *b = {0, b->default_object, b->default_object};
       }
     }
@@ -329,7 +388,9 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
 
 // A name bound to one target cannot be bound to the other: GL_INVALID_OPERATION.
 void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D) return c.set_error(GL_INVALID_ENUM);
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
   TextureBinding& b = c.textures.binding(target);
   if (texture == 0) {
     b.name = 0;
@@ -342,6 +403,8 @@ void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
   if (obj->target == 0) {
     obj->target = target;
     obj->texture.dimensions = texture_dimensions(target);
+    obj->texture.cube_map = target == GL_TEXTURE_CUBE_MAP;
+    if (obj->texture.cube_map) obj->faces.resize(6);
   }
   b.name = texture;
   b.object = obj;

@@ -12,14 +12,27 @@
 
 namespace shadelab::gl {
 
-/// The object bound to GL_TEXTURE_1D, GL_TEXTURE_2D or GL_TEXTURE_3D (the target's default
-/// object while name 0 is bound); nullptr for any other target.
+/// The object bound to GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP (the
+/// target's default object while name 0 is bound); nullptr for any other target.
 TextureObject* bound_texture(GlContext& c, GLenum target);
 
-/// The texture texture unit `unit` applies (GL 1.5 section 3.8.15), or nullptr: GL_TEXTURE_3D
-/// when enabled and complete, else GL_TEXTURE_2D, else GL_TEXTURE_1D (an incomplete texture is
-/// as if its target were disabled, as in Mesa).
+/// The texture texture unit `unit` applies (GL 1.5 section 3.8.15), or nullptr:
+/// GL_TEXTURE_CUBE_MAP when enabled and complete, else GL_TEXTURE_3D, else GL_TEXTURE_2D, else
+/// GL_TEXTURE_1D (an incomplete texture is as if its target were disabled, as in Mesa).
 const Texture* unit_texture(GlContext& c, std::size_t unit);
+
+/// Where the images of an image target live: the bound object of GL_TEXTURE_1D, _2D or _3D,
+/// or the face of the bound cube map for a face target (its base and maximum levels and
+/// mipmap generation those of the cube map); nullptr for any other target.
+TextureObject* image_texture(GlContext& c, GLenum target);
+
+/// Call after level `level` of image target `target` (image_texture's `t`) was specified or
+/// its texels changed: GL_GENERATE_MIPMAP's levels (level_changed), and a face's cube map
+/// assembled again.
+void image_changed(GlContext& c, GLenum target, TextureObject& t, int level);
+
+/// A cube map's levels made from its faces (TextureObject::faces).
+void assemble_cube(TextureObject& cube);
 
 /// The bits of the texture units that apply a texture (unit_texture), GL_FEEDBACK's unit 0
 /// too (feedback reports its coordinates whether or not a texture applies, as Mesa's): the

@@ -35,11 +35,16 @@ struct TexImage {
 /// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
 /// levels and parameters in the core's form (what the pipeline samples), and what GL reports.
 struct TextureObject {
-  GLenum target = 0;  // GL_TEXTURE_1D, GL_TEXTURE_2D or GL_TEXTURE_3D once bound; 0 before
+  GLenum target = 0;  // GL_TEXTURE_1D, _2D, _3D or _CUBE_MAP once bound; 0 before
   Texture texture;
   std::vector<TexImage> images;  // per level
   float priority = 1.0f;
   bool generate_mipmap = false;  // GL_GENERATE_MIPMAP (GL 1.4): mipmap.cpp
+  /// A cube map's six faces (GL 1.3 section 3.8.1; +X, -X, +Y, -Y, +Z, -Z), each holding its
+  /// own images and 2D levels as glTexImage2D of its face target made them; `images` and
+  /// `texture.levels` are then their assembly (assemble_cube): a level where the six faces
+  /// are square, of one size and one internal format, else undefined (cube completeness).
+  std::vector<TextureObject> faces;
 };
 
 /// Texture objects by name; shared between contexts created with a sharelist. glGenTextures
@@ -64,9 +69,15 @@ struct TexGenCoord {
   glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
 };
 
-/// The core's dimensions of a texture target: 1, 2 or 3.
+/// The core's dimensions of a texture target: 1, 2 or 3 (a cube map's faces: 2).
 inline int texture_dimensions(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
+}
+
+/// GL_TEXTURE_CUBE_MAP_POSITIVE_X .. GL_TEXTURE_CUBE_MAP_NEGATIVE_Z (GL 1.3): the targets of a
+/// cube map's images.
+inline bool is_cube_face(GLenum target) {
+  return target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target <= GL_TEXTURE_CUBE_MAP_NEGATIVE_Z;
 }
 
 /// A unit's GL_COMBINE environment as glTexEnv gave it (GL 1.3 section 3.8.13, table 6.20):
@@ -85,7 +96,8 @@ struct TexEnvCombine {
 /// texture coordinates are the context's (per unit there too).
 struct TextureUnitState {
   bool enabled_1d = false, enabled_2d = false, enabled_3d = false;  // GL_TEXTURE_1D, _2D, _3D
-  TextureBinding binding_1d, binding_2d, binding_3d;
+  bool enabled_cube = false;                                        // GL_TEXTURE_CUBE_MAP (GL 1.3)
+  TextureBinding binding_1d, binding_2d, binding_3d, binding_cube;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
   float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
@@ -93,11 +105,12 @@ struct TextureUnitState {
   std::array<TexGenCoord, 4> gen;  // s, t, r, q
 
   TextureBinding& binding(GLenum target) {
-    return target == GL_TEXTURE_1D ? binding_1d : target == GL_TEXTURE_3D ? binding_3d : binding_2d;
+    return target == GL_TEXTURE_1D     ? binding_1d
+           : target == GL_TEXTURE_3D   ? binding_3d
+           : target == GL_TEXTURE_CUBE_MAP ? binding_cube
+                                       : binding_2d;
   }
-  const TextureBinding& binding(GLenum target) const {
-    return target == GL_TEXTURE_1D ? binding_1d : target == GL_TEXTURE_3D ? binding_3d : binding_2d;
-  }
+  const TextureBinding& binding(GLenum target) const { return const_cast<TextureUnitState*>(this)->binding(target); }
   bool any_texgen() const { return gen[0].enabled || gen[1].enabled || gen[2].enabled || gen[3].enabled; }
 };
 
@@ -105,7 +118,7 @@ struct TextureState {
   std::array<TextureUnitState, kMaxTextureUnits> units;
   std::size_t active = 0;  // glActiveTexture's unit (GL_ACTIVE_TEXTURE - GL_TEXTURE0)
   // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
-  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d;
+  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d, proxy_cube;
   std::shared_ptr<TextureNames> names;
 
   /// The active unit, which glBindTexture, glTexEnv, glTexGen, glEnable of a texture target and

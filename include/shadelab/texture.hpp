@@ -73,6 +73,11 @@ struct Texture {
   TextureWrap wrap_s = TextureWrap::kRepeat, wrap_t = TextureWrap::kRepeat;
   /// GL_TEXTURE_WRAP_R (GL 1.2): sampled by 3D textures only.
   TextureWrap wrap_r = TextureWrap::kRepeat;
+  /// A cube map (GL 1.3 section 3.8.6; dimensions 2): each level holds the six square faces as
+  /// `depth` 6 images, in the order +X, -X, +Y, -Y, +Z, -Z; (s, t, r) is a direction whose
+  /// major axis picks the face (cube_face), which is then sampled as a 2D image, with wrap_s
+  /// and wrap_t on the face (no seamless filtering, as GL 1.x and Mesa's default).
+  bool cube_map = false;
   TextureFilter min_filter = TextureFilter::kNearestMipmapLinear;  ///< GL's default
   TextureFilter mag_filter = TextureFilter::kLinear;
   /// GL_TEXTURE_BORDER_COLOR, in [0, 1]: what GL_CLAMP's linear filter and GL_CLAMP_TO_BORDER
@@ -135,15 +140,31 @@ void generate_mipmaps(Texture& texture);
 struct TextureDerivatives {
   float ds_dx = 0.0f, dt_dx = 0.0f, ds_dy = 0.0f, dt_dy = 0.0f;
   float dr_dx = 0.0f, dr_dy = 0.0f;
+  /// (s, t, r) at the quad's top-left pixel: cube maps turn the differences into the face's
+  /// there (cube_rho2).
+  float s = 0.0f, t = 0.0f, r = 0.0f;
 };
+
+/// A cube map's face and the coordinates on it (GL 1.3 section 3.8.6, table 3.19) as
+/// llvmpipe computes them (lp_build_cube_lookup): the major axis is z where |r| >= max(|s|,
+/// |t|), else x where |s| > |t|, else y; its sign (the sign bit) picks the positive or negative
+/// face (0 +X, 1 -X, 2 +Y, 3 -Y, 4 +Z, 5 -Z); s' = sc * (0.5 / |ma|) + 0.5, the same for t'
+/// (0.5 where ma is 0).
+struct CubeCoord {
+  int face = 0;
+  float s = 0.0f, t = 0.0f;
+};
+CubeCoord cube_face(glm::vec3 str);
 
 /// The squared scale factor rho^2 of GL 1.1 section 3.8.5 as llvmpipe computes it (exactly,
 /// in float): the larger of the squared lengths of the x and y differences measured in the
 /// base level's texels ((s^2 + t^2) + r^2 for a 3D texture). A texture is minified where
-/// rho^2 > 1 (without LOD adjustments).
+/// rho^2 > 1 (without LOD adjustments). For a cube map the differences are first those of the
+/// face coordinates of the top-left pixel's face, d(sc / |ma|) / 2 by the quotient rule, as
+/// lp_build_cube_lookup derives them: 0.5 (dsc - sc dma / ma) / ma.
 float texture_rho2(const Texture& texture, const TextureDerivatives& d);
 
-/// The filtered texel colour at (s, t, r) (r for 3D textures only) for a quad whose scale factor is sqrt(rho2), sampled
+/// The filtered texel colour at (s, t, r) (r for 3D textures and cube maps only) for a quad whose scale factor is sqrt(rho2), sampled
 /// through a texture unit whose GL_TEXTURE_LOD_BIAS is `unit_bias`: level selection as
 /// llvmpipe's (without adjustments, log2 computed as lp_build_fast_log2 for *_MIPMAP_LINEAR,
 /// rounded exactly for *_MIPMAP_NEAREST, magnification wherever rho2 <= 1, that is c = 0 for

@@ -84,6 +84,7 @@ struct TexturePlan {
   const Texture* texture = nullptr;  ///< complete; null: the unit is off
   bool one_d = false;
   bool three_d = false;  ///< r sampled too (texcoord planes project it)
+  bool cube = false;     ///< a cube map: (s, t, r) picks a face (cube_face), r projected too
   /// A level of detail per quad is needed: mipmaps, or minification and magnification
   /// filtering differently. Otherwise level 0 with the one filter.
   bool lod = false;

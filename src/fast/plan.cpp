@@ -63,6 +63,7 @@ TexturePlan texture_plan(const TextureUnit& unit) {
   tp.texture = t;
   tp.one_d = t->dimensions == 1;
   tp.three_d = t->dimensions == 3;
+  tp.cube = t->cube_map;
   tp.mipmaps = uses_mipmaps(t->min_filter);
   tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.mag_linear = t->mag_filter == TextureFilter::kLinear;
@@ -70,6 +71,7 @@ TexturePlan texture_plan(const TextureUnit& unit) {
                   t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.lod = tp.mipmaps || tp.min_linear != tp.mag_linear;
   tp.wrap_s = t->wrap_s, tp.wrap_t = t->wrap_t, tp.wrap_r = t->wrap_r;
+  if (t->cube_map) tp.wrap_s = tp.wrap_t = TextureWrap::kClampToEdge;  // texture.cpp's wrap_s_of
   const TextureLevel& base = t->levels[std::size_t(t->base_level)];
   tp.width = float(base.width), tp.height = float(base.height), tp.depth = float(base.depth);
   tp.base_level = t->base_level;

@@ -35,7 +35,7 @@ HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t,
   static constexpr int kSlot[4] = {0, 1, 3, 2};  // s, t, q, r
   const int first = job.plan.layout.texcoord[unit];
   TexcoordPlanes p;
-  p.with_r = job.plan.texture[unit].three_d;
+  p.with_r = job.plan.texture[unit].three_d || job.plan.texture[unit].cube;
   for (int i = 0; i < 4; ++i) {
     const int k = first + kSlot[i];
     const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
@@ -101,6 +101,7 @@ HWY_INLINE void project(D d, const TexcoordPlanes& tp, hn::Vec<D> p0, hn::Vec<D>
 /// textures only).
 struct QuadDerivatives {
   VB ds_dx, dt_dx, ds_dy, dt_dy, dr_dx, dr_dy;
+  VB s, t, r;  // the quad's top-left (s, t, r), for cube maps (TextureDerivatives)
 };
 
 /// Where the block's two rows are one of llvmpipe's quads (an even framebuffer height: its
@@ -121,8 +122,13 @@ HWY_INLINE QuadDerivatives quad_derivatives_in_block(VB s, VB t, VB r, bool with
     const VF dy = hn::Sub(hn::DupEven(row_of(df, v, 0)), hn::DupEven(row_of(df, v, 1)));
     return join_rows(df, dy, dy);
   };
-  QuadDerivatives q{across(s), across(t), down(s), down(t), hn::Zero(DB()), hn::Zero(DB())};
-  if (with_r) q.dr_dx = across(r), q.dr_dy = down(r);
+  auto top_left = [&](VB v) {
+    const VF tl = hn::DupEven(row_of(df, v, 1));
+    return join_rows(df, tl, tl);
+  };
+  QuadDerivatives q{across(s), across(t), down(s), down(t), hn::Zero(DB()), hn::Zero(DB()),
+                    top_left(s), top_left(t), hn::Zero(DB())};
+  if (with_r) q.dr_dx = across(r), q.dr_dy = down(r), q.r = top_left(r);
   return q;
 #endif
 }
@@ -139,7 +145,7 @@ HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const T
   alignas(64) static constexpr double kOddColumns[8] = {0, -1, 0, -1, 0, -1, 0, -1};
   const VD parity = lanes == 1 ? hn::Set(dd, -double(x & 1)) : hn::Load(dd, kOddColumns);
   const VD inv_area = hn::Set(dd, t.inv_area);
-  VF out[6][kRows];
+  VF out[9][kRows];
   #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     const int row = y + r, top = height - 1 - ((height - 1 - row) & ~1);
@@ -165,15 +171,85 @@ HWY_INLINE QuadDerivatives quad_derivatives_anywhere(const DrawJob& job, const T
     out[3][r] = hn::Sub(tt[2], tt[0]);
     out[4][r] = hn::Sub(rr[1], rr[0]);
     out[5][r] = hn::Sub(rr[2], rr[0]);
+    out[6][r] = s[0], out[7][r] = tt[0], out[8][r] = rr[0];
   }
   return {join_rows(df, out[0][0], out[0][kRows - 1]), join_rows(df, out[1][0], out[1][kRows - 1]),
           join_rows(df, out[2][0], out[2][kRows - 1]), join_rows(df, out[3][0], out[3][kRows - 1]),
-          join_rows(df, out[4][0], out[4][kRows - 1]), join_rows(df, out[5][0], out[5][kRows - 1])};
+          join_rows(df, out[4][0], out[4][kRows - 1]), join_rows(df, out[5][0], out[5][kRows - 1]),
+          join_rows(df, out[6][0], out[6][kRows - 1]), join_rows(df, out[7][0], out[7][kRows - 1]),
+          join_rows(df, out[8][0], out[8][kRows - 1])};
+}
+
+/// The major axis of (s, t, r) as cube_face picks it: z where |r| >= max(|s|, |t|), else x
+/// where |s| > |t|; `neg` where its sign bit is set.
+struct CubeAxes {
+  MB x_over_y, z_major, neg;
+  VB ma;
+};
+
+HWY_INLINE CubeAxes cube_axes(VB s, VB t, VB r) {
+  const DB db;
+  const VB as = hn::Abs(s), at = hn::Abs(t), ar = hn::Abs(r);
+  CubeAxes a;
+  a.x_over_y = hn::Gt(as, at);
+  a.z_major = hn::Ge(ar, hn::Max(as, at));
+  a.ma = hn::IfThenElse(a.z_major, r, hn::IfThenElse(a.x_over_y, s, t));
+  const DIB di;
+  a.neg = hn::RebindMask(db, hn::Lt(hn::BitCast(di, a.ma), hn::Zero(di)));
+  return a;
+}
+
+HWY_INLINE VB cube_pick(const CubeAxes& a, VB x, VB y, VB z) {
+  return hn::IfThenElse(a.z_major, z, hn::IfThenElse(a.x_over_y, x, y));
+}
+
+/// The minor axes of a vector (x, y, z) mirrored as cube_face mirrors them.
+HWY_INLINE void cube_minor(const CubeAxes& a, VB x, VB y, VB z, VB& sc, VB& tc) {
+  const VB nx = hn::Neg(x), ny = hn::Neg(y), nz = hn::Neg(z);
+  const VB sz = hn::IfThenElse(a.neg, nx, x), sx = hn::IfThenElse(a.neg, z, nz);
+  sc = hn::IfThenElse(a.z_major, sz, hn::IfThenElse(a.x_over_y, sx, x));
+  tc = hn::IfThenElse(a.z_major, ny, hn::IfThenElse(a.x_over_y, ny, hn::IfThenElse(a.neg, nz, z)));
+}
+
+/// cube_face: (s', t') on the face, and the face (0 to 5) as a float.
+HWY_INLINE void cube_face(VB& s, VB& t, VB& r) {
+  const DB db;
+  const CubeAxes a = cube_axes(s, t, r);
+  VB sc, tc;
+  cube_minor(a, s, t, r, sc, tc);
+  const VB abs_ma = hn::Abs(a.ma), half = hn::Set(db, 0.5f);
+  const VB ima = hn::IfThenElseZero(hn::Gt(abs_ma, hn::Zero(db)), hn::Div(half, abs_ma));
+  VB face = hn::IfThenElse(a.z_major, hn::Set(db, 4.0f), hn::IfThenElse(a.x_over_y, hn::Zero(db), hn::Set(db, 2.0f)));
+  face = hn::Add(face, hn::IfThenElseZero(a.neg, hn::Set(db, 1.0f)));
+  s = hn::Add(hn::Mul(sc, ima), half);
+  t = hn::Add(hn::Mul(tc, ima), half);
+  r = face;
+}
+
+/// texture.cpp's cube_rho2: the face coordinates' differences at the quad's top-left pixel.
+HWY_INLINE VB cube_rho2(const TexturePlan& tp, const QuadDerivatives& d) {
+  const DB db;
+  const CubeAxes a = cube_axes(d.s, d.t, d.r);
+  const VB ima = hn::Div(hn::Set(db, 1.0f), a.ma), imahalf = hn::Mul(hn::Set(db, 0.5f), ima);
+  VB sc, tc, sdx, tdx, sdy, tdy;
+  cube_minor(a, d.s, d.t, d.r, sc, tc);
+  cube_minor(a, d.ds_dx, d.dt_dx, d.dr_dx, sdx, tdx);
+  cube_minor(a, d.ds_dy, d.dt_dy, d.dr_dy, sdy, tdy);
+  const VB madx = hn::Mul(cube_pick(a, d.ds_dx, d.dt_dx, d.dr_dx), ima);
+  const VB mady = hn::Mul(cube_pick(a, d.ds_dy, d.dt_dy, d.dr_dy), ima);
+  const VB dsx = hn::Mul(hn::Sub(sdx, hn::Mul(madx, sc)), imahalf), dtx = hn::Mul(hn::Sub(tdx, hn::Mul(madx, tc)), imahalf);
+  const VB dsy = hn::Mul(hn::Sub(sdy, hn::Mul(mady, sc)), imahalf), dty = hn::Mul(hn::Sub(tdy, hn::Mul(mady, tc)), imahalf);
+  const VB size = hn::Set(db, tp.width);
+  const VB sx = hn::Mul(size, dsx), tx = hn::Mul(size, dtx), sy = hn::Mul(size, dsy), ty = hn::Mul(size, dty);
+  const VB x2 = hn::Add(hn::Mul(sx, sx), hn::Mul(tx, tx)), y2 = hn::Add(hn::Mul(sy, sy), hn::Mul(ty, ty));
+  const VB r2 = hn::IfThenElse(hn::Lt(x2, y2), y2, x2);
+  return hn::IfThenElseZero(hn::IsFinite(r2), r2);
 }
 
 /// texture_rho2: the larger squared length of the x and y differences in the base level's texels.
 HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
   const DB db;
+  if (tp.cube) return cube_rho2(tp, d);
   const VB w = hn::Set(db, tp.width), h = hn::Set(db, tp.height);
   const VB sx = hn::Mul(d.ds_dx, w), sy = hn::Mul(d.ds_dy, w);
   if (tp.one_d) {
@@ -318,6 +394,8 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
   if (tp.three_d) {
     k = wrap_index(k, l.depth, tp.wrap_r, border);
     j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
+  } else if (tp.cube) {  // k: the face's image
+    j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
   }
   const auto index = hn::IfThenZeroElse(border, hn::Add(hn::Mul(j, hn::Set(di, l.width)), i));
   const auto words = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
@@ -349,7 +427,7 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   const VB v = tp.one_d ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
   const VB w = tp.three_d ? texel_coord(r, l.depth, tp.wrap_r) : hn::Zero(db);
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  hn::Vec<DIB> i, j, k = hn::Zero(di);
+  hn::Vec<DIB> i, j, k = tp.cube ? hn::ConvertTo(di, r) : hn::Zero(di);  // a cube map's r: the face
   if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
     i = hn::ConvertTo(di, hn::Floor(u));
     j = tp.one_d ? hn::Zero(di) : hn::ConvertTo(di, hn::Floor(v));
@@ -579,9 +657,10 @@ HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, co
   project(db, planes, w.f0, w.f1, s, tc, r);
   QuadDerivatives d;
   if (tp.lod) {
-    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc, r, tp.three_d)
+    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc, r, planes.with_r)
                                               : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
+  if (tp.cube) cube_face(s, tc, r);
   sample_texture(tp, s, tc, r, tp.lod ? &d : nullptr, live, texel);
 }
 

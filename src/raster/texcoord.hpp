@@ -55,7 +55,7 @@ template <class At>
 TextureDerivatives quad_derivatives(int x, int y, int height, At&& at) {
   const int left = x & ~1, top = height - 1 - ((height - 1 - y) & ~1);
   const ProjectedTexcoord c = at(left, top), right = at(left + 1, top), b = at(left, top - 1);
-  return {right.s - c.s, right.t - c.t, b.s - c.s, b.t - c.t, right.r - c.r, b.r - c.r};
+  return {right.s - c.s, right.t - c.t, b.s - c.s, b.t - c.t, right.r - c.r, b.r - c.r, c.s, c.t, c.r};
 }
 
 }  // namespace shadelab::detail

@@ -64,12 +64,18 @@ int nearest_index(float u, int size, TextureWrap wrap) {
   return std::clamp(i, 0, size - 1);
 }
 
+// The wrap modes sampled: llvmpipe clamps a cube map's faces to their edges whatever the wrap
+// modes say (lp_build_sample_soa_code: gallium keeps no borders, and Direct3D ignores the
+// modes), as Mesa 22 draws them.
+TextureWrap wrap_s_of(const Texture& t) { return t.cube_map ? TextureWrap::kClampToEdge : t.wrap_s; }
+TextureWrap wrap_t_of(const Texture& t) { return t.cube_map ? TextureWrap::kClampToEdge : t.wrap_t; }
+
 // Texel (i, j, k) of a level in byte units (0 to 255; the border colour times 255); j is
 // ignored by 1D textures, k by 1D and 2D ones.
 glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t) {
-  i = wrap_index(i, l.width, t.wrap_s);
-  j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, t.wrap_t);
-  k = t.dimensions < 3 ? 0 : wrap_index(k, l.depth, t.wrap_r);
+  i = wrap_index(i, l.width, wrap_s_of(t));
+  j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, wrap_t_of(t));
+  k = t.cube_map ? k : t.dimensions < 3 ? 0 : wrap_index(k, l.depth, t.wrap_r);  // a cube map's k: the face
   if (i < 0 || j < 0 || k < 0 || i >= l.width || j >= l.height || k >= l.depth) return border_texel(t) * 255.0f;
   const std::size_t row = std::size_t(k) * std::size_t(l.height) + std::size_t(j);
   const std::uint8_t* p = &l.rgba[(row * std::size_t(l.width) + std::size_t(i)) * 4];
@@ -80,16 +86,18 @@ glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w *
 
 // One level's filtered texel in byte units. The arithmetic, operation by operation, is what
 // the fast pipeline's samplers do on every SIMD target (fast/texture-inl.h): keep them equal.
+// A cube map's str is (s', t', face) on the face (cube_face).
 glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) {
   const TextureLevel& l = t.levels[std::size_t(level)];
   const bool one_d = t.dimensions == 1, three_d = t.dimensions == 3;
-  float u = wrap_coord(str.x, l.width, t.wrap_s) * float(l.width);
-  float v = one_d ? 0.0f : wrap_coord(str.y, l.height, t.wrap_t) * float(l.height);
+  const int face = t.cube_map ? int(str.z) : 0;
+  float u = wrap_coord(str.x, l.width, wrap_s_of(t)) * float(l.width);
+  float v = one_d ? 0.0f : wrap_coord(str.y, l.height, wrap_t_of(t)) * float(l.height);
   float w = three_d ? wrap_coord(str.z, l.depth, t.wrap_r) * float(l.depth) : 0.0f;
   if (!linear) {  // nearest reads the border only with clamp to border
-    const int i = nearest_index(u, l.width, t.wrap_s);
-    const int j = one_d ? 0 : nearest_index(v, l.height, t.wrap_t);
-    const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : 0;
+    const int i = nearest_index(u, l.width, wrap_s_of(t));
+    const int j = one_d ? 0 : nearest_index(v, l.height, wrap_t_of(t));
+    const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : face;
     return texel(l, i, j, k, t);
   }
   float uu = u - 0.5f;
@@ -104,7 +112,7 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) 
     const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, k, t), texel(l, i0 + 1, j0 + 1, k, t), a);
     return lerp(top, bottom, b);
   };
-  if (!three_d) return slice(0);
+  if (!three_d) return slice(face);
   float ww = w - 0.5f;
   int k0 = int(std::floor(ww));
   float c = ww - std::floor(ww);
@@ -247,10 +255,65 @@ void generate_mipmaps(Texture& texture) {
   }
 }
 
+CubeCoord cube_face(glm::vec3 v) {
+  const float as = std::fabs(v.x), at = std::fabs(v.y), ar = std::fabs(v.z);
+  const bool x_over_y = as > at, z_major = ar >= std::max(as, at);
+  const float ma = z_major ? v.z : x_over_y ? v.x : v.y;
+  const bool neg = std::signbit(ma);
+  CubeCoord c;
+  float sc, tc;
+  if (z_major) {
+    c.face = 4, sc = neg ? -v.x : v.x, tc = -v.y;
+  } else if (x_over_y) {
+    c.face = 0, sc = neg ? v.z : -v.z, tc = -v.y;
+  } else {
+    c.face = 2, sc = v.x, tc = neg ? -v.z : v.z;
+  }
+  c.face += neg ? 1 : 0;
+  const float abs_ma = std::fabs(ma), ima = abs_ma > 0.0f ? 0.5f / abs_ma : 0.0f;
+  c.s = sc * ima + 0.5f;
+  c.t = tc * ima + 0.5f;
+  return c;
+}
+
+namespace {
+
+// lp_build_cube_lookup's derivatives of the face coordinates at the top-left pixel (the
+// differences of sc, tc and ma picked and mirrored as the coordinates are), then lp_build_rho
+// of a 2D texture of side `size`.
+float cube_rho2(float size, const TextureDerivatives& d) {
+  const float as = std::fabs(d.s), at = std::fabs(d.t), ar = std::fabs(d.r);
+  const bool x_over_y = as > at, z_major = ar >= std::max(as, at);
+  auto pick = [&](float x, float y, float z) { return z_major ? z : x_over_y ? x : y; };
+  const float ma = pick(d.s, d.t, d.r);
+  const bool neg = std::signbit(ma);
+  const float ima = 1.0f / ma, imahalf = 0.5f * ima;
+  // Minor axes as cube_face mirrors them: (sc, tc) of a vector (x, y, z).
+  auto minor = [&](float x, float y, float z, float& sc, float& tc) {
+    if (z_major) sc = neg ? -x : x, tc = -y;
+    else if (x_over_y) sc = neg ? z : -z, tc = -y;
+    else sc = x, tc = neg ? -z : z;
+  };
+  float sc, tc, sdx, tdx, sdy, tdy;
+  minor(d.s, d.t, d.r, sc, tc);
+  minor(d.ds_dx, d.dt_dx, d.dr_dx, sdx, tdx);
+  minor(d.ds_dy, d.dt_dy, d.dr_dy, sdy, tdy);
+  const float madx = pick(d.ds_dx, d.dt_dx, d.dr_dx) * ima, mady = pick(d.ds_dy, d.dt_dy, d.dr_dy) * ima;
+  const float dsx = (sdx - madx * sc) * imahalf, dtx = (tdx - madx * tc) * imahalf;
+  const float dsy = (sdy - mady * sc) * imahalf, dty = (tdy - mady * tc) * imahalf;
+  const float sx = size * dsx, tx = size * dtx, sy = size * dsy, ty = size * dty;
+  const float x2 = sx * sx + tx * tx, y2 = sy * sy + ty * ty;
+  const float rho2 = std::max(x2, y2);
+  return std::isfinite(rho2) ? rho2 : 0.0f;  // lp_build_rho: infinite or NaN rho is 0
+}
+
+}  // namespace
+
 // lp_build_rho (exact, "no_rho_approx", llvmpipe's default since Mesa 20): each difference
 // scaled by level 0's size and squared, in float.
 float texture_rho2(const Texture& t, const TextureDerivatives& d) {
   const TextureLevel& base = t.levels[std::size_t(t.base_level)];
+  if (t.cube_map) return cube_rho2(float(base.width), d);
   const float w = float(base.width), h = float(base.height);
   const float sx = d.ds_dx * w, sy = d.ds_dy * w;
   if (t.dimensions == 1) return std::max(sx * sx, sy * sy);
@@ -293,6 +356,10 @@ glm::vec4 sample_texture_bytes(const Texture& t, glm::vec3 st, float rho2, float
     minified = linear_mip ? lod > 0.0f : rho2 > 1.0f;
   }
   const int base = t.base_level;
+  if (t.cube_map) {  // the face and the coordinates on it, then 2D sampling of that face
+    const CubeCoord c = cube_face(st);
+    st = glm::vec3(c.s, c.t, float(c.face));
+  }
   if (!minified) return sample_level(t, base, st, t.mag_filter == TextureFilter::kLinear);
   if (!uses_mipmaps(f)) return sample_level(t, base, st, f == TextureFilter::kLinear);
   const int last = t.last_level();

@@ -1,7 +1,7 @@
 // Texturing on the fast pipeline's SIMD path against the reference (texture-inl.h against
 // texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode (mirrored
-// repeat and clamp to border too), base format and environment mode, 1D, 2D and 3D (up to
-// 32^3, r varying over the triangles), mipmapped or not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
+// repeat and clamp to border too), base format and environment mode, 1D, 2D, 3D (up to
+// 32^3, r varying over the triangles) and cube maps (directions crossing the faces' edges), mipmapped or not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
 // perspective (every mipmap level in one picture), orthographically, and with projective
 // coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
@@ -35,17 +35,31 @@ void random_levels_3d(std::mt19937& rng, Texture& t) {
   }
 }
 
-// A texture of random size (1 to 256 a side, any aspect; 3D: up to 32^3), noisy checkerboard
-// texels, every parameter random; mipmapped when the filter needs it (and sometimes
-// otherwise).
-std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool three_d = false) {
+// A cube map's chain below level 0: each level halves the faces' side, six faces of random
+// texels around the level's own shade.
+void random_levels_cube(std::mt19937& rng, Texture& t) {
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  while (t.levels.back().width > 1) {
+    TextureLevel dst;
+    dst.width = dst.height = t.levels.back().width / 2, dst.depth = 6;
+    const int shade = pick(0, 200);
+    for (int i = 0; i < dst.width * dst.height * 6 * 4; ++i) dst.rgba.push_back(std::uint8_t(shade + pick(0, 55)));
+    t.levels.push_back(std::move(dst));
+  }
+}
+
+// A texture of random size (1 to 256 a side, any aspect; 3D: up to 32^3; cube maps: six
+// square faces up to 64), noisy checkerboard texels, every parameter random; mipmapped when
+// the filter needs it (and sometimes otherwise).
+std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool three_d = false, bool cube = false) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
   auto t = std::make_shared<Texture>();
   TextureLevel level;
   t->dimensions = one_d ? 1 : three_d ? 3 : 2;
-  level.width = 1 << pick(0, three_d ? 5 : 8);
-  level.height = one_d ? 1 : 1 << pick(0, three_d ? 5 : 8);
-  level.depth = three_d ? 1 << pick(0, 5) : 1;
+  t->cube_map = cube;
+  level.width = 1 << pick(0, three_d ? 5 : cube ? 6 : 8);
+  level.height = one_d ? 1 : cube ? level.width : 1 << pick(0, three_d ? 5 : 8);
+  level.depth = three_d ? 1 << pick(0, 5) : cube ? 6 : 1;
   const int squares = 1 << pick(0, 4);
   for (int k = 0; k < level.depth; ++k) {
     for (int j = 0; j < level.height; ++j) {
@@ -59,7 +73,11 @@ std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool thre
   t->min_filter = TextureFilter(pick(0, 5));
   t->mag_filter = pick(0, 1) ? TextureFilter::kNearest : TextureFilter::kLinear;
   const bool mipmapped = t->min_filter != TextureFilter::kNearest && t->min_filter != TextureFilter::kLinear;
-  if (mipmapped || pick(0, 3) == 0) three_d ? random_levels_3d(rng, *t) : generate_mipmaps(*t);
+  if (mipmapped || pick(0, 3) == 0) {
+    if (three_d) random_levels_3d(rng, *t);
+    else if (cube) random_levels_cube(rng, *t);
+    else generate_mipmaps(*t);
+  }
   t->wrap_r = TextureWrap(pick(0, 4));
   t->wrap_s = TextureWrap(pick(0, 4));
   t->wrap_t = TextureWrap(pick(0, 4));
@@ -118,8 +136,8 @@ TexturedScene textured_scene(unsigned seed) {
   scene.exact = pick(0, 2) == 0;
   for (int k = 0; k < count; ++k) {
     test::RandomDraw d;
-    const int kind = pick(0, 5);  // 1D, 2D or 3D
-    d.texture = random_texture(rng, kind == 0, kind == 5);
+    const int kind = pick(0, 6);  // 1D, 2D, 3D or a cube map
+    d.texture = random_texture(rng, kind == 0, kind == 5, kind == 6);
     const int shape = pick(0, 2);
     const float repeat = pick(0, 2) == 0 ? real(0.05f, 1.5f) : real(1.0f, 64.0f);
     const float s0 = real(-2.0f, 2.0f), t0 = real(-2.0f, 2.0f);
@@ -143,7 +161,7 @@ TexturedScene textured_scene(unsigned seed) {
     const glm::vec2 st[4] = {{s0, t0}, {s0 + repeat, t0}, {s0 + repeat, t0 + repeat}, {s0, t0 + repeat}};
     for (int i = 0; i < 4; ++i) {
       const float q = projective ? real(0.3f, 3.0f) : 1.0f;
-      const float r = kind == 5 ? real(-1.5f, 2.5f) : 0.0f;
+      const float r = kind == 5 ? real(-1.5f, 2.5f) : kind == 6 ? real(-3.0f, 3.0f) : 0.0f;
       d.texcoords.push_back({st[i].x * q, st[i].y * q, r * q, q});
       d.colors.push_back({real(0, 1), real(0, 1), real(0, 1), real(0.2f, 1)});
     }

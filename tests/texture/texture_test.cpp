@@ -354,3 +354,45 @@ TEST(Texture, CombineEnvironment) {
 
 }  // namespace
 }  // namespace shadelab
+
+namespace shadelab {
+namespace {
+
+// GL 1.3 table 3.19 as llvmpipe resolves ties (z over y over x): the face and (s', t') =
+// (sc / |ma| + 1) / 2, computed by hand.
+TEST(CubeMap, FaceAndCoordinatesFromTheMajorAxis) {
+  CubeCoord c = cube_face({1.0f, 0.5f, -0.25f});  // +X: sc = -r, tc = -t
+  EXPECT_EQ(c.face, 0);
+  EXPECT_FLOAT_EQ(c.s, 0.625f);
+  EXPECT_FLOAT_EQ(c.t, 0.25f);
+  c = cube_face({-0.2f, -0.9f, 0.3f});  // -Y: sc = s, tc = -r
+  EXPECT_EQ(c.face, 3);
+  EXPECT_NEAR(c.s, 0.5f - 0.2f / 1.8f, 1e-6f);
+  EXPECT_NEAR(c.t, 0.5f - 0.3f / 1.8f, 1e-6f);
+  c = cube_face({1.0f, 1.0f, 1.0f});  // a tie goes to z: +Z, sc = s, tc = -t
+  EXPECT_EQ(c.face, 4);
+  EXPECT_FLOAT_EQ(c.s, 1.0f);
+  EXPECT_FLOAT_EQ(c.t, 0.0f);
+  c = cube_face({1.0f, -1.0f, 0.0f});  // |s| = |t|: y, negative
+  EXPECT_EQ(c.face, 3);
+  EXPECT_EQ(cube_face({0.0f, 0.0f, -2.0f}).face, 5);
+  EXPECT_EQ(cube_face({-3.0f, 0.0f, 1.0f}).face, 1);
+}
+
+// A face of 8 texels seen straight on at (0, 0, 1): ds/dx of 0.1 is d(s') = 0.05, 0.4 texels.
+TEST(CubeMap, ScaleFactorOfTheFaceCoordinates) {
+  Texture t;
+  t.cube_map = true;
+  TextureLevel l;
+  l.width = l.height = 8, l.depth = 6;
+  l.rgba.assign(8 * 8 * 6 * 4, 0);
+  t.levels.push_back(l);
+  TextureDerivatives d;
+  d.ds_dx = 0.1f, d.r = 1.0f;
+  EXPECT_FLOAT_EQ(texture_rho2(t, d), 0.16f);
+  d.dr_dx = 0.5f, d.s = 0.5f;  // the major axis changes too: (0.1 - 0.5 * 0.5) / 2 = -0.075
+  EXPECT_NEAR(texture_rho2(t, d), 0.6f * 0.6f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace shadelab

@@ -243,6 +243,16 @@ static void wrong_arguments(void) {
   E(glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, 1.5f));
   E(glTexParameterfv(GL_TEXTURE_2D, BAD, kFloats));
   E(glTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, kInts));
+  /* GL 1.3 cube maps: face images are square, the cube map target takes no image, GL_NORMAL_MAP
+   * and GL_REFLECTION_MAP generate s, t and r only. */
+  E(glTexImage2D(GL_TEXTURE_CUBE_MAP_NEGATIVE_Y, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels));
+  E(glTexImage2D(GL_TEXTURE_CUBE_MAP, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, pixels));
+  E(glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_Z, 0, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixels));
+  E(glCopyTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X, 0, GL_RGBA, 0, 0, 2, 1, 0));
+  E(glTexParameteri(GL_TEXTURE_CUBE_MAP_POSITIVE_X, GL_TEXTURE_MIN_FILTER, GL_LINEAR));
+  E(glTexGeni(GL_Q, GL_TEXTURE_GEN_MODE, GL_REFLECTION_MAP));
+  E(glTexGeni(GL_Q, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP));
+  E(glTexGeni(GL_R, GL_TEXTURE_GEN_MODE, GL_NORMAL_MAP));
   E(glVertexPointer(1, GL_FLOAT, 0, kFloats));
   E(glVertexPointer(3, GL_BYTE, 0, kBytes));
   E(glVertexPointer(3, BAD, 0, kFloats));
