@@ -122,8 +122,9 @@ WindowVertex detail::to_window(const ClipVertex& v, const Viewport& vp) {
   return w;
 }
 
-// glPolygonOffset: factor * max depth slope + units * r, r the smallest resolvable depth step
-// of a 24-bit depth buffer (GL 1.5 section 3.5.5).
+// glPolygonOffset: factor * max depth slope + units * r (GL 1.5 section 3.5.5), r two steps of
+// a 24-bit depth buffer as llvmpipe takes it (2 / (2^24 - 1), its draw module's and its
+// triangle setup's: piglit's gl-1.4-polygon-offset measures it), in float as they round it.
 float detail::polygon_offset(const WindowVertex& a, const WindowVertex& b,
                              const WindowVertex& c, const FragmentState& f) {
   double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
@@ -133,7 +134,8 @@ float detail::polygon_offset(const WindowVertex& a, const WindowVertex& b,
     double dzdy = ((c.z - a.z) * (b.x - a.x) - (b.z - a.z) * (c.x - a.x)) / det;
     m = std::max(std::abs(dzdx), std::abs(dzdy));
   }
-  return static_cast<float>(f.offset_factor * m + f.offset_units * (1.0 / 16777216.0));
+  const float units = float(double(f.offset_units) * (1.0 / double((1 << 24) - 1)) * 2.0);
+  return static_cast<float>(f.offset_factor * m + double(units));
 }
 
 float detail::fog_coordinate(const VertexInput& in, std::size_t i) {
