@@ -34,13 +34,13 @@ constexpr GLenum kCapabilities[] = {
 };
 
 // The parameters of a texture object that the texture group holds (GL 1.5 table 6.19),
-// sixteen floats.
+// nineteen floats.
 constexpr GLenum kTextureParameters[] = {
     GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER,  GL_TEXTURE_WRAP_S,     GL_TEXTURE_WRAP_T,
     GL_TEXTURE_WRAP_R,     GL_TEXTURE_PRIORITY,    GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_MIN_LOD,
     GL_TEXTURE_MAX_LOD,    GL_TEXTURE_BASE_LEVEL,  GL_TEXTURE_MAX_LEVEL,  GL_TEXTURE_LOD_BIAS,
-    GL_GENERATE_MIPMAP};
-constexpr std::size_t kTextureParameterFloats = 16;
+    GL_GENERATE_MIPMAP,    GL_DEPTH_TEXTURE_MODE,  GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC};
+constexpr std::size_t kTextureParameterFloats = 19;
 
 // Runs a GL command for its effect on state the stack saves, leaving the error flag as it was:
 // true if the command raised no error (a texture target not implemented raises one).

@@ -311,7 +311,7 @@ struct AttribRecord {
     std::size_t unit = 0;
     GLenum target = 0;
     GLuint name = 0;
-    std::array<float, 16> bound{}, defaults{};  // attrib.cpp's kTextureParameters
+    std::array<float, 19> bound{}, defaults{};  // attrib.cpp's kTextureParameters
   };
   std::vector<TextureTarget> texture_targets;
   std::array<GLenum, 7> hints{};

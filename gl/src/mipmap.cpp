@@ -114,6 +114,7 @@ void level_changed(TextureObject& t, int level) {
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) return;
   const TexImage& base = t.images[std::size_t(level)];
   if (base.width <= 0 || base.height <= 0 || base.depth <= 0) return;
+  if (base.format.depth) return;  // depth textures: no levels are generated (not implemented)
   int w = base.width, h = base.height, d = base.depth, n = 0;
   int size = std::max({w, x.dimensions == 1 ? 1 : h, x.dimensions == 3 ? d : 1});
   while (size > 1) size /= 2, ++n;

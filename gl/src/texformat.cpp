@@ -86,8 +86,29 @@ bool StoredFormat::wide() const {
   return false;
 }
 
+// GL 1.4's depth formats, with the sizes Mesa 22 reports for them (GL_DEPTH_COMPONENT: 24).
+bool depth_format(GLint internal, StoredFormat& out) {
+  int bits = 0;
+  switch (internal) {
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: bits = 24; break;
+    case GL_DEPTH_COMPONENT16: bits = 16; break;
+    case GL_DEPTH_COMPONENT32: bits = 32; break;
+    default: return false;
+  }
+  out = make(TextureFormat::kLuminance, {bits});
+  out.depth = true;
+  return true;
+}
+
+float stored_depth_value(float d, int bits) {
+  const double max = bits >= 32 ? 4294967295.0 : double((1u << bits) - 1u);
+  const double v = d > 0.0f ? (d < 1.0f ? double(d) : 1.0) : 0.0;
+  return float(std::floor(v * max) / max);
+}
+
 bool stored_format(GLint internal_format, StoredFormat& out) {
-  return alpha_or_luminance(internal_format, out) || rgb_or_rgba(internal_format, out);
+  return alpha_or_luminance(internal_format, out) || rgb_or_rgba(internal_format, out) ||
+         depth_format(internal_format, out);
 }
 
 int base_components(TextureFormat base, const float rgba[4], float out[4]) {
@@ -149,6 +170,7 @@ void texel_to_rgba(TextureFormat base, const float* c, float rgba[4]) {
 
 int component_size(const StoredFormat& f, GLenum pname) {
   using F = TextureFormat;
+  if (f.depth || pname == GL_TEXTURE_DEPTH_SIZE) return f.depth && pname == GL_TEXTURE_DEPTH_SIZE ? f.bits[0] : 0;
   const bool rgb = f.base == F::kRgb || f.base == F::kRgba;
   switch (pname) {
     case GL_TEXTURE_RED_SIZE: return rgb ? f.bits[0] : 0;

@@ -10,6 +10,7 @@
 #include "gl/generated/exec.hpp"
 #include "gl/generated/run.hpp"
 #include "gl/generated/save.hpp"
+#include "gl/src/pixel_transfer.hpp"
 #include "gl/src/pixels.hpp"
 #include "gl/src/texture.hpp"
 
@@ -34,7 +35,27 @@ GLenum check_format_and_type(GLenum format, GLenum type) {
   return packed_format_error(format, type);
 }
 
-bool formats_agree(GLenum format) { return format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX; }
+// Mesa's texture_formats_agree: depth images for depth internal formats only (GL 1.4), and
+// the other way round; no stencil images.
+bool formats_agree(GLenum format, bool depth_internal) {
+  return format != GL_STENCIL_INDEX && (format == GL_DEPTH_COMPONENT) == depth_internal;
+}
+
+// A GL_DEPTH_COMPONENT client image's values (converted, scaled and biased as glDrawPixels'
+// depth, section 3.6.4), clamped to [0, 1], stored at (x, y) of a depth level.
+void store_depths(const GlContext& c, int x0, int y0, int width, int height, GLenum type, const void* pixels,
+                  int bits, TextureLevel& core) {
+  if (!pixels || width <= 0 || height <= 0) return;
+  std::vector<float> depths;
+  unpack_depth_image(c, pixels, width, height, type, depths);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const float d = depths[std::size_t(y) * std::size_t(width) + std::size_t(x)];
+      core.depth_values[std::size_t(y0 + y) * std::size_t(core.width) + std::size_t(x0 + x)] =
+          stored_depth_value(d, bits);
+    }
+  }
+}
 
 // Mesa's _mesa_legal_texture_dimensions: each side from 2 border to 2 border + the largest
 // size at that level (any size in between: non-power-of-two sizes are accepted). 3D
@@ -113,7 +134,8 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
   StoredFormat stored;
   if (!stored_format(internal, stored)) return c.set_error(GL_INVALID_VALUE);
-  if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
+  if (!formats_agree(format, stored.depth)) return c.set_error(GL_INVALID_OPERATION);
+  if (stored.depth && dims == 3) return c.set_error(GL_INVALID_OPERATION);  // 1D and 2D depth textures (Mesa)
   const bool legal = legal_size(width, border, level, dims) && (dims == 1 || legal_size(height, border, level, dims)) &&
                      (dims < 3 || legal_size(depth, border, level, dims)) && (!cube || width == height);
   const bool fits = cube ? fits_in_memory(width, height, 6) : dims < 3 || fits_in_memory(width, height, depth);
@@ -125,6 +147,12 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   const bool strip_rows = dims >= 2 && border && height >= 3, strip_images = dims == 3 && border && depth >= 3;
   const int inner_h = strip_rows ? height - 2 : height, inner_d = strip_images ? depth - 2 : depth;
   TextureObject& t = *image_texture(c, target);
+  if (stored.depth) {  // GL 1.4: a depth image (its border, if any, left out of the client image's rows)
+    texture_changing(c, t);
+    define_level(t, level, internal, inner_w, inner_h, 1);
+    store_depths(c, 0, 0, inner_w, inner_h, type, pixels, stored.bits[0], t.texture.levels[std::size_t(level)]);
+    return image_changed(c, target, t, level);
+  }
   RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
                            inner_d, dims == 3, format, type, pixels);
   texture_changing(c, t);
@@ -149,8 +177,13 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
       long(z) + depth > img.depth) {
     return c.set_error(GL_INVALID_VALUE);
   }
-  if (!formats_agree(format)) return c.set_error(GL_INVALID_OPERATION);
+  if (!formats_agree(format, img.format.depth)) return c.set_error(GL_INVALID_OPERATION);
   if (width == 0 || height == 0 || depth == 0 || !pixels) return;
+  if (img.format.depth) {
+    texture_changing(c, t);
+    store_depths(c, x, y, width, height, type, pixels, img.format.bits[0], t.texture.levels[std::size_t(level)]);
+    return image_changed(c, target, t, level);
+  }
   RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
   texture_changing(c, t);
   store_texels(image, x, y, z, img, t.texture.levels[std::size_t(level)]);
@@ -170,7 +203,9 @@ std::vector<unsigned char> list_image(const GlContext& c, int width, int height,
     if (format != GL_COLOR_INDEX || depth > 0) return {};
     return copy_bitmap(c.unpack, width, height, pixels);
   }
-  const int components = format == GL_COLOR_INDEX ? 1 : color_format_components(format) ? elements_per_pixel(format, type) : 0;
+  const int components = format == GL_COLOR_INDEX || format == GL_DEPTH_COMPONENT ? 1
+                         : color_format_components(format)                      ? elements_per_pixel(format, type)
+                                                                                : 0;
   const int size = pixel_type_size(type);
   if (components == 0 || size == 0) return {};
   if (depth == 0) return copy_image(c.unpack, width, height, components, size, pixels);
@@ -206,6 +241,8 @@ bool define_level(TextureObject& t, int level, GLint internal_format, int width,
   TextureLevel& core = t.texture.levels[l];
   core.width = width, core.height = height, core.depth = depth;
   core.rgba.assign(texels * 4, 0);
+  if (format.depth) core.depth_values.assign(texels, 0.0f);
+  else core.depth_values.clear();
   if (level == 0) t.texture.format = format.base;
   return true;
 }

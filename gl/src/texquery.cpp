@@ -37,7 +37,7 @@ bool is_level_pname(GLenum pname) {
     case GL_TEXTURE_WIDTH: case GL_TEXTURE_HEIGHT: case kTextureDepth: case GL_TEXTURE_BORDER:
     case GL_TEXTURE_INTERNAL_FORMAT: case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE:
     case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_LUMINANCE_SIZE:
-    case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_COMPRESSED:
+    case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_DEPTH_SIZE:
       return true;
     default: return false;
   }
@@ -164,6 +164,33 @@ void pack_component(const Stored& s, GLenum type, bool swap, unsigned char* p) {
   }
 }
 
+// A depth level as GL_DEPTH_COMPONENT values of `type` (the floats kept, converted as
+// glReadPixels converts depths; byte swapping as the pack state says).
+void get_depth_image(GlContext& c, const TextureObject& t, int level, GLenum type, void* pixels) {
+  if (!pixels) return;
+  const TexImage& img = t.images[std::size_t(level)];
+  const TextureLevel& core = t.texture.levels[std::size_t(level)];
+  const int size = pixel_type_size(type);
+  if (packed_type(type)) return c.set_error(GL_INVALID_OPERATION);
+  const PixelLayout layout = pixel_layout(c.pack, 1, size, img.width);
+  const bool swap = c.pack.swap_bytes;
+  for (int y = 0; y < img.height; ++y) {
+    for (int x = 0; x < img.width; ++x) {
+      const float d = core.depth_values[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
+      unsigned char* p = static_cast<unsigned char*>(pixels) + layout.offset(x, y);
+      switch (type) {
+        case GL_UNSIGNED_BYTE: *p = GLubyte(std::lround(d * 255.0f)); break;
+        case GL_BYTE: *p = static_cast<unsigned char>(GLbyte(std::lround(d * 127.0f))); break;
+        case GL_UNSIGNED_SHORT: put(p, GLushort(std::lround(d * 65535.0f)), swap); break;
+        case GL_SHORT: put(p, GLshort(std::lround(d * 32767.0f)), swap); break;
+        case GL_UNSIGNED_INT: put(p, GLuint(std::llround(double(d) * 4294967295.0)), swap); break;
+        case GL_INT: put(p, GLint(std::llround(double(d) * 2147483647.0)), swap); break;
+        default: put(p, GLfloat(d), swap); break;
+      }
+    }
+  }
+}
+
 void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && !is_cube_face(target)) {
     return c.set_error(GL_INVALID_ENUM);
@@ -173,8 +200,13 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
                             format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
   if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
   if (const GLenum e = packed_format_error(format, type); e != GL_NO_ERROR) return c.set_error(e);
-  if (format == GL_DEPTH_COMPONENT || format == GL_STENCIL_INDEX) return c.set_error(GL_INVALID_OPERATION);
   TextureObject& t = *image_texture(c, target);
+  // A depth texture reads back as GL_DEPTH_COMPONENT only, and only it does (GL 1.4).
+  const bool depth_texture = std::size_t(level) < t.images.size() && t.images[std::size_t(level)].format.depth;
+  if (format == GL_STENCIL_INDEX || (format == GL_DEPTH_COMPONENT) != depth_texture) {
+    return c.set_error(GL_INVALID_OPERATION);
+  }
+  if (depth_texture) return get_depth_image(c, t, level, type, pixels);
   if (std::size_t(level) >= t.images.size() || !t.images[std::size_t(level)].defined || !pixels) return;
   if (format == GL_COLOR_INDEX) return;  // no index textures in an RGBA context: nothing is written
   const TexImage& img = t.images[std::size_t(level)];

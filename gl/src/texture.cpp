@@ -113,6 +113,21 @@ void tex_parameter(GlContext& c, GLenum target, GLenum pname, const float* v, bo
       for (int i = 0; i < 4; ++i) x.border_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
       return;
     case GL_TEXTURE_PRIORITY: t->priority = std::clamp(finite_or_zero(v[0]), 0.0f, 1.0f); return;
+    // GL 1.4's depth textures (ARB_depth_texture, ARB_shadow; EXT_shadow_funcs' functions).
+    case GL_DEPTH_TEXTURE_MODE:
+      if (e == GL_LUMINANCE) t->depth_mode = TextureFormat::kLuminance;
+      else if (e == GL_INTENSITY) t->depth_mode = TextureFormat::kIntensity;
+      else if (e == GL_ALPHA) t->depth_mode = TextureFormat::kAlpha;
+      else return c.set_error(GL_INVALID_ENUM);
+      return;
+    case GL_TEXTURE_COMPARE_MODE:
+      if (e != GL_NONE && e != GL_COMPARE_R_TO_TEXTURE) return c.set_error(GL_INVALID_ENUM);
+      x.compare = e == GL_COMPARE_R_TO_TEXTURE;
+      return;
+    case GL_TEXTURE_COMPARE_FUNC:
+      if (e < GLint(GL_NEVER) || e > GLint(GL_ALWAYS)) return c.set_error(GL_INVALID_ENUM);
+      x.compare_func = TextureCompare(e - GL_NEVER);  // GL_NEVER .. GL_ALWAYS in TextureCompare's order
+      return;
     default: return c.set_error(GL_INVALID_ENUM);
   }
 }
@@ -135,6 +150,13 @@ int get_tex_parameter(const TextureObject& t, GLenum pname, float* v) {
     case GL_TEXTURE_BORDER_COLOR: for (int i = 0; i < 4; ++i) v[i] = x.border_color[i]; return 4;
     case GL_TEXTURE_PRIORITY: v[0] = t.priority; return 1;
     case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;  // every texture is resident
+    case GL_DEPTH_TEXTURE_MODE:
+      v[0] = float(t.depth_mode == TextureFormat::kIntensity ? GL_INTENSITY
+                   : t.depth_mode == TextureFormat::kAlpha   ? GL_ALPHA
+                                                              : GL_LUMINANCE);
+      return 1;
+    case GL_TEXTURE_COMPARE_MODE: v[0] = float(x.compare ? GL_COMPARE_R_TO_TEXTURE : GL_NONE); return 1;
+    case GL_TEXTURE_COMPARE_FUNC: v[0] = float(GL_NEVER + int(x.compare_func)); return 1;
     default: return 0;
   }
 }
@@ -218,7 +240,9 @@ const Texture* complete_texture(TextureObject& t) {
   for (int i = t.texture.base_level + 1; i <= last; ++i) {
     if (t.images[std::size_t(i)].internal_format != t.images[base].internal_format) return nullptr;
   }
-  t.texture.format = t.images[base].format.base;  // the environment follows the base level's
+  // The environment follows the base level's format; a depth texture's, its depth mode.
+  t.texture.depth = t.images[base].format.depth;
+  t.texture.format = t.texture.depth ? t.depth_mode : t.images[base].format.base;
   return &t.texture;
 }
 
@@ -275,6 +299,8 @@ void assemble_cube(TextureObject& cube) {
     for (const TextureObject& f : cube.faces) {
       const std::vector<std::uint8_t>& face = f.texture.levels[l].rgba;
       core.rgba.insert(core.rgba.end(), face.begin(), face.end());
+      const std::vector<float>& depth = f.texture.levels[l].depth_values;
+      core.depth_values.insert(core.depth_values.end(), depth.begin(), depth.end());
     }
   }
   if (!cube.images.empty() && cube.images[0].defined) cube.texture.format = cube.images[0].format.base;

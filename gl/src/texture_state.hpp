@@ -40,6 +40,9 @@ struct TextureObject {
   std::vector<TexImage> images;  // per level
   float priority = 1.0f;
   bool generate_mipmap = false;  // GL_GENERATE_MIPMAP (GL 1.4): mipmap.cpp
+  /// GL_DEPTH_TEXTURE_MODE (GL 1.4): a depth texture's texels as luminance, intensity or alpha
+  /// (the core's Texture::format while the base level is a depth image).
+  TextureFormat depth_mode = TextureFormat::kLuminance;
   /// A cube map's six faces (GL 1.3 section 3.8.1; +X, -X, +Y, -Y, +Z, -Z), each holding its
   /// own images and 2D levels as glTexImage2D of its face target made them; `images` and
   /// `texture.levels` are then their assembly (assemble_cube): a level where the six faces

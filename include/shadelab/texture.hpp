@@ -51,6 +51,9 @@ struct TextureCombine {
 /// environment; the units apply in order, each to the previous unit's colour. llvmpipe's
 /// GL_MAX_TEXTURE_UNITS is 8; shadelab has 4 (GL 1.3's minimum is 2).
 inline constexpr int kMaxTextureUnits = 4;
+/// GL_TEXTURE_COMPARE_FUNC (GL 1.4's GL_LEQUAL and GL_GEQUAL, EXT_shadow_funcs' others): the
+/// comparison of r with a depth texel, r OP D.
+enum class TextureCompare { kNever, kLess, kEqual, kLequal, kGreater, kNotequal, kGequal, kAlways };
 /// The base internal format, which decides how the environment combines (table 3.22).
 /// Texels are stored expanded to RGBA: luminance L as (L, L, L, 1), luminance-alpha as
 /// (L, L, L, A), intensity I as (I, I, I, I), alpha A as (0, 0, 0, A), RGB with alpha 1.
@@ -62,6 +65,8 @@ struct TextureLevel {
   /// of `height` rows one after the other, image 0 at r = 0.
   std::vector<std::uint8_t> rgba;
   int depth = 1;  ///< images (3D levels; 1 otherwise)
+  /// A depth texture's texels (GL 1.4, ARB_depth_texture), in [0, 1], laid out as `rgba`.
+  std::vector<float> depth_values;
 };
 
 struct Texture {
@@ -78,6 +83,15 @@ struct Texture {
   /// major axis picks the face (cube_face), which is then sampled as a 2D image, with wrap_s
   /// and wrap_t on the face (no seamless filtering, as GL 1.x and Mesa's default).
   bool cube_map = false;
+  /// A depth texture (GL 1.4, 1D or 2D): its levels' depth_values are sampled; each texel is
+  /// D, or with `compare` (GL_COMPARE_R_TO_TEXTURE, ARB_shadow) 1 where r OP D holds and 0
+  /// elsewhere, compared texel by texel before filtering as llvmpipe does (percentage-closer
+  /// filtering); then expanded as `format` says (GL_DEPTH_TEXTURE_MODE: luminance (v, v, v,
+  /// 1), intensity (v, v, v, v), alpha (0, 0, 0, v)). r is s, t, r's r after the division by q,
+  /// clamped to [0, 1] (llvmpipe's for unorm depth formats).
+  bool depth = false;
+  bool compare = false;
+  TextureCompare compare_func = TextureCompare::kLequal;
   TextureFilter min_filter = TextureFilter::kNearestMipmapLinear;  ///< GL's default
   TextureFilter mag_filter = TextureFilter::kLinear;
   /// GL_TEXTURE_BORDER_COLOR, in [0, 1]: what GL_CLAMP's linear filter and GL_CLAMP_TO_BORDER
@@ -175,6 +189,21 @@ glm::vec4 sample_texture(const Texture& texture, glm::vec3 str, float rho2, floa
 /// are read as their bytes, filtered by linear interpolations a + w (b - a) (along s, then
 /// t, then r, then between two levels), the border colour taken times 255.
 glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
+
+/// r OP d of a depth comparison.
+inline bool depth_compare(TextureCompare op, float r, float d) {
+  switch (op) {
+    case TextureCompare::kNever: return false;
+    case TextureCompare::kLess: return r < d;
+    case TextureCompare::kEqual: return r == d;
+    case TextureCompare::kLequal: return r <= d;
+    case TextureCompare::kGreater: return r > d;
+    case TextureCompare::kNotequal: return r != d;
+    case TextureCompare::kGequal: return r >= d;
+    case TextureCompare::kAlways: return true;
+  }
+  return false;
+}
 
 /// A texture coordinate the samplers can index with: NaN becomes 0 and magnitudes are kept
 /// below 2^20, so that texel indices never overflow (such coordinates only repeat or clamp).

@@ -85,6 +85,10 @@ struct TexturePlan {
   bool one_d = false;
   bool three_d = false;  ///< r sampled too (texcoord planes project it)
   bool cube = false;     ///< a cube map: (s, t, r) picks a face (cube_face), r projected too
+  bool depth_texture = false;  ///< a depth texture (Texture::depth): r projected too, the value compared
+  bool compare = false;  ///< Texture::compare, with compare_func
+  TextureCompare compare_func = TextureCompare::kLequal;
+  float border_depth = 0.0f;  ///< the border colour's red, a depth texture's border texel
   /// A level of detail per quad is needed: mipmaps, or minification and magnification
   /// filtering differently. Otherwise level 0 with the one filter.
   bool lod = false;

@@ -64,6 +64,8 @@ TexturePlan texture_plan(const TextureUnit& unit) {
   tp.one_d = t->dimensions == 1;
   tp.three_d = t->dimensions == 3;
   tp.cube = t->cube_map;
+  tp.depth_texture = t->depth, tp.compare = t->compare, tp.compare_func = t->compare_func;
+  tp.border_depth = t->border_color.r;
   tp.mipmaps = uses_mipmaps(t->min_filter);
   tp.linear_mip = t->min_filter == TextureFilter::kNearestMipmapLinear || t->min_filter == TextureFilter::kLinearMipmapLinear;
   tp.mag_linear = t->mag_filter == TextureFilter::kLinear;

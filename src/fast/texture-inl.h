@@ -35,7 +35,7 @@ HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t,
   static constexpr int kSlot[4] = {0, 1, 3, 2};  // s, t, q, r
   const int first = job.plan.layout.texcoord[unit];
   TexcoordPlanes p;
-  p.with_r = job.plan.texture[unit].three_d || job.plan.texture[unit].cube;
+  p.with_r = job.plan.texture[unit].three_d || job.plan.texture[unit].cube || job.plan.texture[unit].depth_texture;
   for (int i = 0; i < 4; ++i) {
     const int k = first + kSlot[i];
     const float a0 = t.var[0][k], a1 = t.var[1][k], a2 = t.var[2][k];
@@ -384,8 +384,34 @@ HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, h
 
 /// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
 /// words; j is ignored by 1D textures, k by 1D and 2D ones.
+/// texture.cpp's depth_texel: r OP d (or d) in byte units, expanded by the depth texture mode.
+HWY_INLINE void depth_texels(const TexturePlan& tp, VB d, VB ref, VB out[4]) {
+  const DB db;
+  VB v = hn::Mul(d, hn::Set(db, 255.0f));
+  if (tp.compare) {
+    MB pass;
+    switch (tp.compare_func) {
+      case TextureCompare::kNever: pass = hn::FirstN(db, 0); break;
+      case TextureCompare::kLess: pass = hn::Lt(ref, d); break;
+      case TextureCompare::kEqual: pass = hn::Eq(ref, d); break;
+      case TextureCompare::kLequal: pass = hn::Le(ref, d); break;
+      case TextureCompare::kGreater: pass = hn::Gt(ref, d); break;
+      case TextureCompare::kNotequal: pass = hn::Ne(ref, d); break;
+      case TextureCompare::kGequal: pass = hn::Ge(ref, d); break;
+      default: pass = hn::FirstN(db, hn::Lanes(db)); break;
+    }
+    v = hn::IfThenElseZero(pass, hn::Set(db, 255.0f));
+  }
+  const VB zero = hn::Zero(db);
+  switch (tp.format) {
+    case TextureFormat::kIntensity: out[0] = out[1] = out[2] = out[3] = v; return;
+    case TextureFormat::kAlpha: out[0] = out[1] = out[2] = zero, out[3] = v; return;
+    default: out[0] = out[1] = out[2] = v, out[3] = hn::Set(db, 255.0f); return;
+  }
+}
+
 HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, hn::Vec<DIB> k,
-                      VB out[4]) {
+                      VB out[4], VB ref) {
   const DIB di;
   const DUB du;
   hn::Mask<DIB> border = hn::FirstN(di, 0);
@@ -398,6 +424,12 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
     j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
   }
   const auto index = hn::IfThenZeroElse(border, hn::Add(hn::Mul(j, hn::Set(di, l.width)), i));
+  if (tp.depth_texture) {  // the border's depth: the border colour's red
+    const DB db;
+    VB d = hn::GatherIndex(db, l.depth_values.data(), index);
+    d = hn::IfThenElse(hn::RebindMask(db, border), hn::Set(db, tp.border_depth), d);
+    return depth_texels(tp, d, ref, out);
+  }
   const auto words = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
   const bool any_border = !hn::AllFalse(di, border);
   #pragma GCC unroll 4
@@ -420,6 +452,7 @@ HWY_INLINE bool keeps_nearest_in_level(TextureWrap w) {
 /// blend four texels (two for 1D textures), the others take the nearest; the nearest reads
 /// the border only with clamp to border.
 HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r, MB linear, VB out[4]) {
+  if (tp.depth_texture) r = hn::Min(hn::Max(r, hn::Zero(DB())), hn::Set(DB(), 1.0f));  // texture.cpp's ref
   const DB db;
   const DIB di;
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
@@ -438,7 +471,7 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
       if (keeps_nearest_in_level(tp.wrap_r)) k = hn::Min(k, hn::Set(di, l.depth - 1));
     }
   }
-  if (!any_linear) return fetch(tp, l, i, j, k, out);
+  if (!any_linear) return fetch(tp, l, i, j, k, out, r);
   const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
   const VB fu = hn::Floor(uu), fv = hn::Floor(vv);
   const auto li = hn::RebindMask(di, linear);
@@ -449,18 +482,18 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   const auto one = hn::Set(di, 1);
   if (tp.one_d) {
     VB c00[4], c10[4];
-    fetch(tp, l, i, j, k, c00);
-    fetch(tp, l, hn::Add(i, one), j, k, c10);
+    fetch(tp, l, i, j, k, c00, r);
+    fetch(tp, l, hn::Add(i, one), j, k, c10, r);
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
     return;
   }
   auto slice = [&](hn::Vec<DIB> kk, VB res[4]) {  // the reference's bilinear slice
     VB t00[4], t10[4], t01[4], t11[4];
-    fetch(tp, l, i, j, kk, t00);
-    fetch(tp, l, hn::Add(i, one), j, kk, t10);
-    fetch(tp, l, i, hn::Add(j, one), kk, t01);
-    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), kk, t11);
+    fetch(tp, l, i, j, kk, t00, r);
+    fetch(tp, l, hn::Add(i, one), j, kk, t10, r);
+    fetch(tp, l, i, hn::Add(j, one), kk, t01, r);
+    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), kk, t11, r);
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) res[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
   };

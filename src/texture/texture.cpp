@@ -72,11 +72,28 @@ TextureWrap wrap_t_of(const Texture& t) { return t.cube_map ? TextureWrap::kClam
 
 // Texel (i, j, k) of a level in byte units (0 to 255; the border colour times 255); j is
 // ignored by 1D textures, k by 1D and 2D ones.
-glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t) {
+// A depth texel d in byte units: d, or 1 where r OP d holds (compare), expanded by the depth
+// texture mode.
+glm::vec4 depth_texel(const Texture& t, float d, float ref) {
+  const float v = t.compare ? (depth_compare(t.compare_func, ref, d) ? 255.0f : 0.0f) : d * 255.0f;
+  switch (t.format) {
+    case TextureFormat::kIntensity: return glm::vec4(v);
+    case TextureFormat::kAlpha: return {0.0f, 0.0f, 0.0f, v};
+    default: return {v, v, v, 255.0f};
+  }
+}
+
+// `ref`: a depth texture's r (the value compared).
+glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t, float ref = 0.0f) {
   i = wrap_index(i, l.width, wrap_s_of(t));
   j = t.dimensions == 1 ? 0 : wrap_index(j, l.height, wrap_t_of(t));
   k = t.cube_map ? k : t.dimensions < 3 ? 0 : wrap_index(k, l.depth, t.wrap_r);  // a cube map's k: the face
-  if (i < 0 || j < 0 || k < 0 || i >= l.width || j >= l.height || k >= l.depth) return border_texel(t) * 255.0f;
+  const bool outside = i < 0 || j < 0 || k < 0 || i >= l.width || j >= l.height || k >= l.depth;
+  if (t.depth) {  // the border's depth is the border colour's red
+    const std::size_t at = (std::size_t(k) * std::size_t(l.height) + std::size_t(j)) * std::size_t(l.width) + std::size_t(i);
+    return depth_texel(t, outside ? t.border_color.r : l.depth_values[at], ref);
+  }
+  if (outside) return border_texel(t) * 255.0f;
   const std::size_t row = std::size_t(k) * std::size_t(l.height) + std::size_t(j);
   const std::uint8_t* p = &l.rgba[(row * std::size_t(l.width) + std::size_t(i)) * 4];
   return glm::vec4(p[0], p[1], p[2], p[3]);
@@ -91,6 +108,9 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) 
   const TextureLevel& l = t.levels[std::size_t(level)];
   const bool one_d = t.dimensions == 1, three_d = t.dimensions == 3;
   const int face = t.cube_map ? int(str.z) : 0;
+  // A depth texture's r, clamped to [0, 1] as llvmpipe clamps it for unorm depth formats
+  // (lp_build_sample_compare).
+  const float ref = std::clamp(str.z, 0.0f, 1.0f);
   float u = wrap_coord(str.x, l.width, wrap_s_of(t)) * float(l.width);
   float v = one_d ? 0.0f : wrap_coord(str.y, l.height, wrap_t_of(t)) * float(l.height);
   float w = three_d ? wrap_coord(str.z, l.depth, t.wrap_r) * float(l.depth) : 0.0f;
@@ -98,18 +118,18 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) 
     const int i = nearest_index(u, l.width, wrap_s_of(t));
     const int j = one_d ? 0 : nearest_index(v, l.height, wrap_t_of(t));
     const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : face;
-    return texel(l, i, j, k, t);
+    return texel(l, i, j, k, t, ref);
   }
   float uu = u - 0.5f;
   int i0 = int(std::floor(uu));
   float a = uu - std::floor(uu);
-  if (one_d) return lerp(texel(l, i0, 0, 0, t), texel(l, i0 + 1, 0, 0, t), a);
+  if (one_d) return lerp(texel(l, i0, 0, 0, t, ref), texel(l, i0 + 1, 0, 0, t, ref), a);
   float vv = v - 0.5f;
   int j0 = int(std::floor(vv));
   float b = vv - std::floor(vv);
   auto slice = [&](int k) {
-    const glm::vec4 top = lerp(texel(l, i0, j0, k, t), texel(l, i0 + 1, j0, k, t), a);
-    const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, k, t), texel(l, i0 + 1, j0 + 1, k, t), a);
+    const glm::vec4 top = lerp(texel(l, i0, j0, k, t, ref), texel(l, i0 + 1, j0, k, t, ref), a);
+    const glm::vec4 bottom = lerp(texel(l, i0, j0 + 1, k, t, ref), texel(l, i0 + 1, j0 + 1, k, t, ref), a);
     return lerp(top, bottom, b);
   };
   if (!three_d) return slice(face);

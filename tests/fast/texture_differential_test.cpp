@@ -1,7 +1,8 @@
 // Texturing on the fast pipeline's SIMD path against the reference (texture-inl.h against
 // texture.cpp): textures of up to 256 x 256 texels with every filter pair, wrap mode (mirrored
 // repeat and clamp to border too), base format and environment mode, 1D, 2D, 3D (up to
-// 32^3, r varying over the triangles) and cube maps (directions crossing the faces' edges), mipmapped or not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
+// 32^3, r varying over the triangles), cube maps (directions crossing the faces' edges) and depth
+// textures (compared with r by every function, or not, in every depth texture mode), mipmapped or not, with base and maximum levels, LOD clamps and biases (the texture's and the unit's), on floors and walls seen in
 // perspective (every mipmap level in one picture), orthographically, and with projective
 // coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
@@ -95,6 +96,23 @@ std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool thre
   return t;
 }
 
+// A 1D or 2D depth texture: random depths in steps of 1/64 (so that r meets some exactly),
+// compared or not, by any function, read as luminance, intensity or alpha.
+std::shared_ptr<Texture> random_depth_texture(std::mt19937& rng, bool one_d) {
+  auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
+  std::shared_ptr<Texture> t = random_texture(rng, one_d);
+  t->depth = true;
+  for (TextureLevel& l : t->levels) {
+    l.depth_values.clear();
+    for (int i = 0; i < l.width * l.height; ++i) l.depth_values.push_back(float(pick(0, 64)) / 64.0f);
+  }
+  t->compare = pick(0, 3) != 0;
+  t->compare_func = TextureCompare(pick(0, 7));
+  const TextureFormat modes[3] = {TextureFormat::kLuminance, TextureFormat::kIntensity, TextureFormat::kAlpha};
+  t->format = modes[pick(0, 2)];
+  return t;
+}
+
 struct TexturedScene {
   Framebuffer initial;
   std::vector<test::RandomDraw> draws;
@@ -136,8 +154,8 @@ TexturedScene textured_scene(unsigned seed) {
   scene.exact = pick(0, 2) == 0;
   for (int k = 0; k < count; ++k) {
     test::RandomDraw d;
-    const int kind = pick(0, 6);  // 1D, 2D, 3D or a cube map
-    d.texture = random_texture(rng, kind == 0, kind == 5, kind == 6);
+    const int kind = pick(0, 7);  // 1D, 2D, 3D, a cube map or a depth texture
+    d.texture = kind == 7 ? random_depth_texture(rng, pick(0, 3) == 0) : random_texture(rng, kind == 0, kind == 5, kind == 6);
     const int shape = pick(0, 2);
     const float repeat = pick(0, 2) == 0 ? real(0.05f, 1.5f) : real(1.0f, 64.0f);
     const float s0 = real(-2.0f, 2.0f), t0 = real(-2.0f, 2.0f);
@@ -161,7 +179,7 @@ TexturedScene textured_scene(unsigned seed) {
     const glm::vec2 st[4] = {{s0, t0}, {s0 + repeat, t0}, {s0 + repeat, t0 + repeat}, {s0, t0 + repeat}};
     for (int i = 0; i < 4; ++i) {
       const float q = projective ? real(0.3f, 3.0f) : 1.0f;
-      const float r = kind == 5 ? real(-1.5f, 2.5f) : kind == 6 ? real(-3.0f, 3.0f) : 0.0f;
+      const float r = kind == 5 ? real(-1.5f, 2.5f) : kind == 6 ? real(-3.0f, 3.0f) : kind == 7 ? real(-0.3f, 1.3f) : 0.0f;
       d.texcoords.push_back({st[i].x * q, st[i].y * q, r * q, q});
       d.colors.push_back({real(0, 1), real(0, 1), real(0, 1), real(0.2f, 1)});
     }
@@ -175,7 +193,8 @@ TexturedScene textured_scene(unsigned seed) {
     if (pick(0, 3) == 0) unit.lod_bias = real(-3.0f, 3.0f);
     d.frag.depth_test = pick(0, 1);
     if (scene.exact) {
-      d.texture->format = TextureFormat::kRgba;
+      // The texel is the whole colour: RGBA, or a depth texture read as intensity.
+      d.texture->format = d.texture->depth ? TextureFormat::kIntensity : TextureFormat::kRgba;
       unit.env = TextureEnvMode::kReplace;
     } else {
       unit.env = TextureEnvMode(pick(0, 5));
