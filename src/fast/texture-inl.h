@@ -382,8 +382,6 @@ HWY_INLINE hn::Vec<DIB> wrap_index(hn::Vec<DIB> i, int size, TextureWrap wrap, h
   return i;
 }
 
-/// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
-/// words; j is ignored by 1D textures, k by 1D and 2D ones.
 /// texture.cpp's depth_texel: r OP d (or d) in byte units, expanded by the depth texture mode.
 HWY_INLINE void depth_texels(const TexturePlan& tp, VB d, VB ref, VB out[4]) {
   const DB db;
@@ -410,6 +408,8 @@ HWY_INLINE void depth_texels(const TexturePlan& tp, VB d, VB ref, VB out[4]) {
   }
 }
 
+/// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
+/// words; j is ignored by 1D textures, k by 1D and 2D ones.
 HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, hn::Vec<DIB> k,
                       VB out[4], VB ref) {
   const DIB di;
