@@ -45,37 +45,104 @@ void exec::ClientActiveTexture(GlContext& c, GLenum texture) {
   c.arrays.client_active = std::size_t(u);
 }
 
-void exec::MultiTexCoord1s(GlContext& c, GLenum target, GLshort s) { multi_texcoord(c, target, s, 0, 0, 1); }
-void exec::MultiTexCoord1i(GlContext& c, GLenum target, GLint s) { multi_texcoord(c, target, s, 0, 0, 1); }
-void exec::MultiTexCoord1f(GlContext& c, GLenum target, GLfloat s) { multi_texcoord(c, target, s, 0, 0, 1); }
-void exec::MultiTexCoord1d(GlContext& c, GLenum target, GLdouble s) { multi_texcoord(c, target, s, 0, 0, 1); }
-void exec::MultiTexCoord2s(GlContext& c, GLenum target, GLshort s, GLshort t) { multi_texcoord(c, target, s, t, 0, 1); }
-void exec::MultiTexCoord2i(GlContext& c, GLenum target, GLint s, GLint t) { multi_texcoord(c, target, s, t, 0, 1); }
-void exec::MultiTexCoord2f(GlContext& c, GLenum target, GLfloat s, GLfloat t) { multi_texcoord(c, target, s, t, 0, 1); }
-void exec::MultiTexCoord2d(GlContext& c, GLenum target, GLdouble s, GLdouble t) { multi_texcoord(c, target, s, t, 0, 1); }
-void exec::MultiTexCoord3s(GlContext& c, GLenum target, GLshort s, GLshort t, GLshort r) { multi_texcoord(c, target, s, t, r, 1); }
-void exec::MultiTexCoord3i(GlContext& c, GLenum target, GLint s, GLint t, GLint r) { multi_texcoord(c, target, s, t, r, 1); }
-void exec::MultiTexCoord3f(GlContext& c, GLenum target, GLfloat s, GLfloat t, GLfloat r) { multi_texcoord(c, target, s, t, r, 1); }
-void exec::MultiTexCoord3d(GlContext& c, GLenum target, GLdouble s, GLdouble t, GLdouble r) { multi_texcoord(c, target, s, t, r, 1); }
-void exec::MultiTexCoord4s(GlContext& c, GLenum target, GLshort s, GLshort t, GLshort r, GLshort q) { multi_texcoord(c, target, s, t, r, q); }
-void exec::MultiTexCoord4i(GlContext& c, GLenum target, GLint s, GLint t, GLint r, GLint q) { multi_texcoord(c, target, s, t, r, q); }
-void exec::MultiTexCoord4f(GlContext& c, GLenum target, GLfloat s, GLfloat t, GLfloat r, GLfloat q) { multi_texcoord(c, target, s, t, r, q); }
-void exec::MultiTexCoord4d(GlContext& c, GLenum target, GLdouble s, GLdouble t, GLdouble r, GLdouble q) { multi_texcoord(c, target, s, t, r, q); }
-void exec::MultiTexCoord1sv(GlContext& c, GLenum target, const GLshort* v) { multi_texcoord_v(c, target, v, 1); }
-void exec::MultiTexCoord1iv(GlContext& c, GLenum target, const GLint* v) { multi_texcoord_v(c, target, v, 1); }
-void exec::MultiTexCoord1fv(GlContext& c, GLenum target, const GLfloat* v) { multi_texcoord_v(c, target, v, 1); }
-void exec::MultiTexCoord1dv(GlContext& c, GLenum target, const GLdouble* v) { multi_texcoord_v(c, target, v, 1); }
-void exec::MultiTexCoord2sv(GlContext& c, GLenum target, const GLshort* v) { multi_texcoord_v(c, target, v, 2); }
-void exec::MultiTexCoord2iv(GlContext& c, GLenum target, const GLint* v) { multi_texcoord_v(c, target, v, 2); }
-void exec::MultiTexCoord2fv(GlContext& c, GLenum target, const GLfloat* v) { multi_texcoord_v(c, target, v, 2); }
-void exec::MultiTexCoord2dv(GlContext& c, GLenum target, const GLdouble* v) { multi_texcoord_v(c, target, v, 2); }
-void exec::MultiTexCoord3sv(GlContext& c, GLenum target, const GLshort* v) { multi_texcoord_v(c, target, v, 3); }
-void exec::MultiTexCoord3iv(GlContext& c, GLenum target, const GLint* v) { multi_texcoord_v(c, target, v, 3); }
-void exec::MultiTexCoord3fv(GlContext& c, GLenum target, const GLfloat* v) { multi_texcoord_v(c, target, v, 3); }
-void exec::MultiTexCoord3dv(GlContext& c, GLenum target, const GLdouble* v) { multi_texcoord_v(c, target, v, 3); }
-void exec::MultiTexCoord4sv(GlContext& c, GLenum target, const GLshort* v) { multi_texcoord_v(c, target, v, 4); }
-void exec::MultiTexCoord4iv(GlContext& c, GLenum target, const GLint* v) { multi_texcoord_v(c, target, v, 4); }
-void exec::MultiTexCoord4fv(GlContext& c, GLenum target, const GLfloat* v) { multi_texcoord_v(c, target, v, 4); }
-void exec::MultiTexCoord4dv(GlContext& c, GLenum target, const GLdouble* v) { multi_texcoord_v(c, target, v, 4); }
+void exec::MultiTexCoord1s(GlContext& c, GLenum target, GLshort s) {
+  multi_texcoord(c, target, s, 0, 0, 1);
+}
+void exec::MultiTexCoord1i(GlContext& c, GLenum target, GLint s) {
+  multi_texcoord(c, target, s, 0, 0, 1);
+}
+void exec::MultiTexCoord1f(GlContext& c, GLenum target, GLfloat s) {
+  multi_texcoord(c, target, s, 0, 0, 1);
+}
+void exec::MultiTexCoord1d(GlContext& c, GLenum target, GLdouble s) {
+  multi_texcoord(c, target, s, 0, 0, 1);
+}
+void exec::MultiTexCoord2s(GlContext& c, GLenum target, GLshort s, GLshort t) {
+  multi_texcoord(c, target, s, t, 0, 1);
+}
+void exec::MultiTexCoord2i(GlContext& c, GLenum target, GLint s, GLint t) {
+  multi_texcoord(c, target, s, t, 0, 1);
+}
+void exec::MultiTexCoord2f(GlContext& c, GLenum target, GLfloat s, GLfloat t) {
+  multi_texcoord(c, target, s, t, 0, 1);
+}
+void exec::MultiTexCoord2d(GlContext& c, GLenum target, GLdouble s, GLdouble t) {
+  multi_texcoord(c, target, s, t, 0, 1);
+}
+void exec::MultiTexCoord3s(GlContext& c, GLenum target, GLshort s, GLshort t, GLshort r) {
+  multi_texcoord(c, target, s, t, r, 1);
+}
+void exec::MultiTexCoord3i(GlContext& c, GLenum target, GLint s, GLint t, GLint r) {
+  multi_texcoord(c, target, s, t, r, 1);
+}
+void exec::MultiTexCoord3f(GlContext& c, GLenum target, GLfloat s, GLfloat t, GLfloat r) {
+  multi_texcoord(c, target, s, t, r, 1);
+}
+void exec::MultiTexCoord3d(GlContext& c, GLenum target, GLdouble s, GLdouble t, GLdouble r) {
+  multi_texcoord(c, target, s, t, r, 1);
+}
+void exec::MultiTexCoord4s(GlContext& c, GLenum target, GLshort s, GLshort t, GLshort r,
+                           GLshort q) {
+  multi_texcoord(c, target, s, t, r, q);
+}
+void exec::MultiTexCoord4i(GlContext& c, GLenum target, GLint s, GLint t, GLint r, GLint q) {
+  multi_texcoord(c, target, s, t, r, q);
+}
+void exec::MultiTexCoord4f(GlContext& c, GLenum target, GLfloat s, GLfloat t, GLfloat r,
+                           GLfloat q) {
+  multi_texcoord(c, target, s, t, r, q);
+}
+void exec::MultiTexCoord4d(GlContext& c, GLenum target, GLdouble s, GLdouble t, GLdouble r,
+                           GLdouble q) {
+  multi_texcoord(c, target, s, t, r, q);
+}
+void exec::MultiTexCoord1sv(GlContext& c, GLenum target, const GLshort* v) {
+  multi_texcoord_v(c, target, v, 1);
+}
+void exec::MultiTexCoord1iv(GlContext& c, GLenum target, const GLint* v) {
+  multi_texcoord_v(c, target, v, 1);
+}
+void exec::MultiTexCoord1fv(GlContext& c, GLenum target, const GLfloat* v) {
+  multi_texcoord_v(c, target, v, 1);
+}
+void exec::MultiTexCoord1dv(GlContext& c, GLenum target, const GLdouble* v) {
+  multi_texcoord_v(c, target, v, 1);
+}
+void exec::MultiTexCoord2sv(GlContext& c, GLenum target, const GLshort* v) {
+  multi_texcoord_v(c, target, v, 2);
+}
+void exec::MultiTexCoord2iv(GlContext& c, GLenum target, const GLint* v) {
+  multi_texcoord_v(c, target, v, 2);
+}
+void exec::MultiTexCoord2fv(GlContext& c, GLenum target, const GLfloat* v) {
+  multi_texcoord_v(c, target, v, 2);
+}
+void exec::MultiTexCoord2dv(GlContext& c, GLenum target, const GLdouble* v) {
+  multi_texcoord_v(c, target, v, 2);
+}
+void exec::MultiTexCoord3sv(GlContext& c, GLenum target, const GLshort* v) {
+  multi_texcoord_v(c, target, v, 3);
+}
+void exec::MultiTexCoord3iv(GlContext& c, GLenum target, const GLint* v) {
+  multi_texcoord_v(c, target, v, 3);
+}
+void exec::MultiTexCoord3fv(GlContext& c, GLenum target, const GLfloat* v) {
+  multi_texcoord_v(c, target, v, 3);
+}
+void exec::MultiTexCoord3dv(GlContext& c, GLenum target, const GLdouble* v) {
+  multi_texcoord_v(c, target, v, 3);
+}
+void exec::MultiTexCoord4sv(GlContext& c, GLenum target, const GLshort* v) {
+  multi_texcoord_v(c, target, v, 4);
+}
+void exec::MultiTexCoord4iv(GlContext& c, GLenum target, const GLint* v) {
+  multi_texcoord_v(c, target, v, 4);
+}
+void exec::MultiTexCoord4fv(GlContext& c, GLenum target, const GLfloat* v) {
+  multi_texcoord_v(c, target, v, 4);
+}
+void exec::MultiTexCoord4dv(GlContext& c, GLenum target, const GLdouble* v) {
+  multi_texcoord_v(c, target, v, 4);
+}
 
 }  // namespace shadelab::gl
