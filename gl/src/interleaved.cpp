@@ -3,6 +3,8 @@
 // only; the draws are arrays.cpp's.
 #include <cstddef>
 
+#include <cstdint>
+
 #include "gl/generated/exec.hpp"
 #include "gl/src/context.hpp"
 
@@ -42,8 +44,10 @@ bool layout_of(GLenum format, Layout& l) {
   }
 }
 
+// `pointer` + `offset` bytes, as an address: with a buffer bound (GL 1.5) the pointer is an
+// offset into it, often 0, which pointer arithmetic may not move.
 const void* at(const void* pointer, int offset) {
-  return static_cast<const unsigned char*>(pointer) + offset;
+  return reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(pointer) + std::uintptr_t(offset));
 }
 
 }  // namespace
