@@ -2,7 +2,6 @@
 // set up as the equivalent gl*Pointer and glEnable/DisableClientState calls. Array state
 // only; the draws are arrays.cpp's.
 #include <cstddef>
-
 #include <cstdint>
 
 #include "gl/generated/exec.hpp"
