@@ -540,6 +540,13 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
   for (int k = 0; k < 4; ++k) out[k] = hn::Mul(out[k], hn::Set(db, 1.0f / 255.0f));
 }
 
+/// texture.cpp's saturate: [0, 1], NaN to 0.
+HWY_INLINE VB saturate(VB v) {
+  const DB db;
+  const VB zero = hn::Zero(db), one = hn::Set(db, 1.0f);
+  return hn::IfThenElse(hn::Gt(v, zero), hn::IfThenElse(hn::Lt(v, one), v, one), zero);
+}
+
 /// apply_texture_env: the fragment's colour `f` combined with the texel `t` by the
 /// environment mode, as the texture's base format says (GL 1.1 table 3.22).
 HWY_INLINE void texture_env(const TexturePlan& tp, VB f[4], const VB t[4]) {
@@ -583,24 +590,16 @@ HWY_INLINE void texture_env(const TexturePlan& tp, VB f[4], const VB t[4]) {
       return;
     }
     case TextureEnvMode::kAdd: {
-      const VB zero = hn::Zero(db);
-      auto sat = [&](VB v) { return hn::IfThenElse(hn::Gt(v, zero), hn::IfThenElse(hn::Lt(v, one), v, one), zero); };
       if (has_color) {
         #pragma GCC unroll 3
-        for (int c = 0; c < 3; ++c) f[c] = sat(hn::Add(f[c], t[c]));
+        for (int c = 0; c < 3; ++c) f[c] = saturate(hn::Add(f[c], t[c]));
       }
-      if (tp.format == TextureFormat::kIntensity) f[3] = sat(hn::Add(f[3], t[3]));
+      if (tp.format == TextureFormat::kIntensity) f[3] = saturate(hn::Add(f[3], t[3]));
       else if (has_alpha) f[3] = hn::Mul(f[3], t[3]);
       return;
     }
+    case TextureEnvMode::kCombine: return;  // texture_combine's
   }
-}
-
-/// texture.cpp's saturate: [0, 1], NaN to 0.
-HWY_INLINE VB saturate(VB v) {
-  const DB db;
-  const VB zero = hn::Zero(db), one = hn::Set(db, 1.0f);
-  return hn::IfThenElse(hn::Gt(v, zero), hn::IfThenElse(hn::Lt(v, one), v, one), zero);
 }
 
 /// apply_texture_combine (texture.cpp) lane by lane, operation by operation: unit `unit`'s

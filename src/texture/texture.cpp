@@ -395,6 +395,13 @@ glm::vec4 sample_texture_bytes(const Texture& t, glm::vec3 st, float rho2, float
   return lerp(sample_level(t, level, st, linear_in_level), sample_level(t, level + 1, st, linear_in_level), frac);
 }
 
+namespace {
+
+// [0, 1], NaN to 0 (Mesa's fixed-function program's saturate).
+float saturate(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
+}  // namespace
+
 glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm::vec4& f,
                             const glm::vec4& t, const glm::vec4& env) {
   glm::vec3 cf(f), ct(t), cc(env);
@@ -418,11 +425,12 @@ glm::vec4 apply_texture_env(TextureEnvMode mode, TextureFormat format, const glm
       return glm::vec4(c, a);
     }
     case TextureEnvMode::kAdd: {  // GL 1.3 table 3.23; sums saturated, as Mesa's program does
-      auto sat = [](float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; };
-      const glm::vec3 c = has_color ? glm::vec3(sat(cf.r + ct.r), sat(cf.g + ct.g), sat(cf.b + ct.b)) : cf;
-      const float a = format == TextureFormat::kIntensity ? sat(f.a + at) : (has_alpha ? f.a * at : f.a);
+      const glm::vec3 sum(saturate(cf.r + ct.r), saturate(cf.g + ct.g), saturate(cf.b + ct.b));
+      const glm::vec3 c = has_color ? sum : cf;
+      const float a = format == TextureFormat::kIntensity ? saturate(f.a + at) : (has_alpha ? f.a * at : f.a);
       return glm::vec4(c, a);
     }
+    case TextureEnvMode::kCombine: return f;  // apply_texture_combine's
   }
   return f;
 }
@@ -470,8 +478,6 @@ T combine_function(CombineFunction f, const T& a0, const T& a1, const T& a2) {
 bool needs_clamp(CombineFunction f) {
   return f != CombineFunction::kReplace && f != CombineFunction::kModulate && f != CombineFunction::kInterpolate;
 }
-
-float saturate(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
 
 // The scale, then the clamp Mesa applies (after scaling, or after the functions that need it).
 float finish(float v, float scale, bool clamp) {
