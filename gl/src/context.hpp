@@ -75,19 +75,12 @@ struct LightingState {
   GLenum shade_model = GL_SMOOTH;
 };
 
-/// (0, 0, 0, 1) for every texture unit.
-constexpr std::array<glm::vec4, kMaxTextureUnits> initial_texcoords() {
-  std::array<glm::vec4, kMaxTextureUnits> t;
-  for (glm::vec4& v : t) v = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
-  return t;
-}
-
 /// The current vertex attributes (GL 1.1 section 2.7), in object space.
 struct CurrentAttribs {
   glm::vec4 color{1.0f};
   glm::vec3 normal{0.0f, 0.0f, 1.0f};
   // Per texture unit (GL 1.3 section 2.7): glTexCoord sets unit 0's, glMultiTexCoord any.
-  std::array<glm::vec4, kMaxTextureUnits> texcoords = initial_texcoords();
+  std::array<glm::vec4, kMaxTextureUnits> texcoords = FragmentRect::filled_texcoords();
   float index = 1.0f;      // GL_CURRENT_INDEX: kept, colours nothing in an RGBA context
   float edge_flag = 1.0f;  // GL_EDGE_FLAG as given (GL_TRUE only when exactly 1, as Mesa's)
   // GL 1.4 section 2.7: GL_CURRENT_SECONDARY_COLOR (glSecondaryColor3* sets red, green and

@@ -13,7 +13,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "shadelab/texture.hpp"
+#include "shadelab/pipeline.hpp"
 
 namespace shadelab::gl {
 
@@ -28,8 +28,7 @@ struct RasterPosition {
   glm::vec4 color{1.0f};                        ///< lit (clamped) or the current colour (as given)
   glm::vec4 secondary{0.0f, 0.0f, 0.0f, 1.0f};  ///< the separate specular colour when lit
   /// Per texture unit, after the unit's texture matrix.
-  std::array<glm::vec4, kMaxTextureUnits> texcoords{glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f),
-                                                    glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)};
+  std::array<glm::vec4, kMaxTextureUnits> texcoords = FragmentRect::filled_texcoords();
   float distance = 0.0f;                        ///< eye-space distance from the eye (fog)
   float index = 1.0f;                           ///< GL_CURRENT_RASTER_INDEX (colour index mode only)
 };
