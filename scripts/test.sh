@@ -121,7 +121,7 @@ sanitizer_tests() {
 }
 
 tsan_run() {
-  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1"
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tests/sanitizers/tsan.supp"
   # The test program in two halves side by side (its tests are mostly single-threaded).
   local pids=() status=0 i
   for i in 0 1; do
