@@ -15,6 +15,7 @@
 namespace shadelab {
 namespace {
 
+using test::random_cases;
 using test::compare_buffers;
 using test::compare_captures;
 using test::RandomDraw;
@@ -26,7 +27,7 @@ using test::simd_only;
 
 TEST(FastDifferential, RandomDrawsMatchTheReference) {
   PipelineContext one(1), two(2), three(3);
-  for (unsigned seed = 1; seed <= 400; ++seed) {
+  for (unsigned seed = 1; seed <= random_cases(400); ++seed) {
     std::string diff = check_seed(seed, {&one, &two, &three});
     ASSERT_EQ(diff, "");
   }
@@ -49,7 +50,7 @@ TEST(FastDifferential, EverySimdTargetMatchesTheReference) {
 // Coverage counted exactly: unlit additive drawing of 1/255 per fragment, no depth test.
 TEST(FastDifferential, CoverageCountsAreIdentical) {
   PipelineContext three(3);
-  for (unsigned seed = 2000; seed < 2150; ++seed) {
+  for (unsigned seed = 2000; seed < 2000 + random_cases(150); ++seed) {
     RandomDraws random(seed);
     glm::ivec2 size = random.size();
     Framebuffer initial;
@@ -88,7 +89,7 @@ TEST(FastDifferential, DeferredDrawsMatchTheReference) {
   one.set_deferred(true);
   two.set_deferred(true);
   int buffered_scenes = 0;
-  for (unsigned seed = 4000; seed < 4250; ++seed) {
+  for (unsigned seed = 4000; seed < 4000 + random_cases(250); ++seed) {
     RandomDraws random(seed);
     glm::ivec2 size = random.size();
     if (random.chance(0.3)) size = {random.integer(128, 330), random.integer(128, 260)};
@@ -140,7 +141,7 @@ TEST(FastDifferential, DeferredDrawsMatchTheReference) {
       ASSERT_EQ(compare_buffers(fast.fb, ref.fb) + compare_captures(fast.capture, ref.capture), "") << where;
     }
   }
-  EXPECT_GT(buffered_scenes, 50);
+  EXPECT_GT(buffered_scenes, int(random_cases(250)) / 5);
 }
 
 // A wall of small quads at random depths, then large layers at the wall's farthest depth,

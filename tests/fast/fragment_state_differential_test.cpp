@@ -10,6 +10,7 @@
 namespace shadelab {
 namespace {
 
+using test::random_cases;
 using test::check_seed;
 using test::compare_buffers;
 using test::RandomDraw;
@@ -20,7 +21,7 @@ using test::simd_only;
 
 TEST(FastFragmentState, RandomDrawsMatchTheReference) {
   PipelineContext one(1), two(2), three(3);
-  for (unsigned seed = 6000; seed < 6300; ++seed) ASSERT_EQ(check_seed(seed, {&one, &two, &three}, true), "");
+  for (unsigned seed = 6000; seed < 6000 + random_cases(300); ++seed) ASSERT_EQ(check_seed(seed, {&one, &two, &three}, true), "");
 }
 
 TEST(FastFragmentState, EverySimdTargetMatchesTheReference) {
@@ -74,7 +75,7 @@ TEST(FastFragmentState, EachStateAloneOnTheSimdPath) {
 TEST(FastFragmentState, DeferredDrawsMatchTheReference) {
   PipelineContext two(2);
   two.set_deferred(true);
-  for (unsigned seed = 8500; seed < 8600; ++seed) {
+  for (unsigned seed = 8500; seed < 8500 + random_cases(100); ++seed) {
     RandomDraws random(seed);
     glm::ivec2 size{random.integer(60, 300), random.integer(60, 200)};
     Framebuffer initial = random.framebuffer(size);

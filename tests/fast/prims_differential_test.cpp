@@ -9,6 +9,7 @@
 namespace shadelab {
 namespace {
 
+using test::random_cases;
 using test::compare_scene;
 using test::RandomDraw;
 using test::RandomDraws;
@@ -28,7 +29,7 @@ std::string check_prims(unsigned seed, const std::vector<PipelineContext*>& cont
 
 TEST(FastPrims, RandomLinesPointsAndPolygonModesMatchTheReference) {
   PipelineContext one(1), two(2), three(3);
-  for (unsigned seed = 1; seed <= 200; ++seed) {
+  for (unsigned seed = 1; seed <= random_cases(200); ++seed) {
     std::string diff = check_prims(seed, {&one, &two, &three});
     ASSERT_EQ(diff, "");
   }
@@ -50,7 +51,7 @@ TEST(FastPrims, EverySimdTargetMatchesTheReference) {
 // Triangles clipped by user planes: the same polygons in both pipelines.
 TEST(FastPrims, UserClipPlanesOnTrianglesMatchTheReference) {
   PipelineContext two(2);
-  for (unsigned seed = 3000; seed < 3150; ++seed) {
+  for (unsigned seed = 3000; seed < 3000 + random_cases(150); ++seed) {
     RandomDraws random(seed);
     glm::ivec2 size = random.size();
     Framebuffer initial = random.framebuffer(size);

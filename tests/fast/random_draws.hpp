@@ -13,6 +13,24 @@
 
 namespace shadelab::test {
 
+/// How many of a differential test's `n` random cases run: all of them, but a quarter in the
+/// ThreadSanitizer build. That run is there for the threads' synchronization, which the first
+/// cases exercise as well as the rest, at some twenty times the cost of a plain run; every
+/// case still runs in the plain and the AddressSanitizer builds.
+constexpr unsigned random_cases(unsigned n) {
+#if defined(__SANITIZE_THREAD__)
+  return (n + 3) / 4;
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+  return (n + 3) / 4;
+#else
+  return n;
+#endif
+#else
+  return n;
+#endif
+}
+
 /// One draw_triangles call and everything its spans point into.
 struct RandomDraw {
   std::vector<glm::vec4> positions, colors, back_colors;
