@@ -3,7 +3,7 @@
 // rule; the exec:: functions of the GL commands change it, draw.cpp hands primitives to the
 // core pipeline. The larger features keep their state in their own headers, included here
 // (texture_state.hpp, vertex_state.hpp, pixel_state.hpp, dlist_state.hpp, eval_state.hpp,
-// feedback_state.hpp, query_state.hpp).
+// feedback_state.hpp, query_state.hpp, and the client state in client_state.hpp).
 // No global state except the thread's current-context pointer (as OSMesaMakeCurrent needs).
 #pragma once
 
@@ -25,6 +25,7 @@
 #include <glm/vec4.hpp>
 
 #include "gl/src/buffer_state.hpp"
+#include "gl/src/client_state.hpp"
 #include "gl/src/dlist_state.hpp"
 #include "gl/src/eval_state.hpp"
 #include "gl/src/feedback_state.hpp"
@@ -199,52 +200,6 @@ struct MultisampleState {
   bool coverage_invert = false;
 };
 
-/// glPixelStore parameters for one direction (pack: glReadPixels, unpack: glTexImage2D).
-struct PixelStore {
-  GLint alignment = 4, row_length = 0, skip_pixels = 0, skip_rows = 0;
-  GLint image_height = 0, skip_images = 0;  // GL 1.2: 3D images (section 3.6.4)
-  bool swap_bytes = false, lsb_first = false;
-};
-
-struct ClientArray {
-  bool enabled = false;
-  GLint size = 4;
-  GLenum type = GL_FLOAT;
-  GLsizei stride = 0;
-  const void* pointer = nullptr;  // an offset into `buffer` when there is one
-  // GL 1.5 section 2.9: the buffer bound to GL_ARRAY_BUFFER when the pointer was given
-  // (GL_*_ARRAY_BUFFER_BINDING), null for client memory.
-  std::shared_ptr<BufferObject> buffer;
-  GLuint buffer_name = 0;
-};
-
-struct ClientArrays {
-  static ClientArray initial(GLint size, GLenum type = GL_FLOAT) {
-    ClientArray a;
-    a.size = size, a.type = type;
-    return a;
-  }
-  ClientArray vertex, normal = initial(3), color;
-  // Per texture unit (GL 1.3 section 2.8): glTexCoordPointer and GL_TEXTURE_COORD_ARRAY address
-  // the client active unit's (glClientActiveTexture).
-  std::array<ClientArray, kMaxTextureUnits> texcoords;
-  std::size_t client_active = 0;
-  ClientArray& texcoord() { return texcoords[client_active]; }
-  const ClientArray& texcoord() const { return texcoords[client_active]; }
-  ClientArray secondary_color = initial(3), fog_coord = initial(1);  // GL 1.4 section 2.8
-  ClientArray index = initial(1);                        // colour indices: current index only
-  ClientArray edge_flag = initial(1, GL_UNSIGNED_BYTE);  // GLboolean elements
-  // GL 1.5: GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER (vertex-array client state).
-  std::shared_ptr<BufferObject> array_buffer, element_buffer;
-  GLuint array_buffer_name = 0, element_buffer_name = 0;
-  /// Every array, for what applies to all of them (buffers read in place, deleted buffers).
-  std::array<ClientArray*, 7 + kMaxTextureUnits> all() {
-    static_assert(kMaxTextureUnits == 4);
-    return {&vertex,       &normal,       &color,           &texcoords[0], &texcoords[1], &texcoords[2],
-            &texcoords[3], &secondary_color, &fog_coord, &index,        &edge_flag};
-  }
-};
-
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
 struct UserBuffer {
   void* data = nullptr;
@@ -316,13 +271,6 @@ struct AttribRecord {
   glm::vec4 accum_clear{0.0f};                             // accum-buffer group
   EvalAttribs eval;
   MultisampleState multisample;  // multisample group (GL 1.3)
-};
-
-/// One glPushClientAttrib entry (GL 1.1 section 6.1.14).
-struct ClientAttribRecord {
-  GLbitfield mask = 0;
-  PixelStore pack, unpack;
-  ClientArrays arrays;
 };
 
 /// GL_MAX_ATTRIB_STACK_DEPTH and GL_MAX_CLIENT_ATTRIB_STACK_DEPTH (Mesa's).

@@ -74,4 +74,17 @@ inline float color_component(GLuint v) { return float(double(v) * (1.0 / 4294967
 inline float color_component(GLfloat v) { return v; }
 inline float color_component(GLdouble v) { return float(v); }
 
+// GL parameters given as integers or floats, as floats: integers as colours (int_to_color)
+// where `color`, else as they are.
+template <class T>
+inline void to_floats(const T* in, int n, bool color, float* out) {
+  for (int i = 0; i < n; ++i) {
+    if constexpr (std::is_integral_v<T>) {
+      out[i] = color ? int_to_color(in[i]) : float(in[i]);
+    } else {
+      out[i] = float(in[i]);
+    }
+  }
+}
+
 }  // namespace shadelab::gl

@@ -1,9 +1,16 @@
-// The texture environment's GL_COMBINE parameters (GL 1.3 section 3.8.13, tables 3.24-3.26;
-// ARB_texture_env_combine, ARB_texture_env_dot3, ARB_texture_env_crossbar): glTexEnv's and
-// glGetTexEnv's GL_COMBINE_RGB / _ALPHA, GL_SOURCEn_RGB / _ALPHA, GL_OPERANDn_RGB / _ALPHA,
-// GL_RGB_SCALE and GL_ALPHA_SCALE of the active unit, checked as Mesa checks them, and their
-// form in the core (TextureCombine), which computes the environment on both pipelines.
+// The texture environment (GL 1.1 section 3.8.9; GL 1.5 sections 3.8.8, 3.8.13): glTexEnv* and
+// glGetTexEnv* of the active unit: the mode, the colour, GL 1.4's GL_TEXTURE_FILTER_CONTROL
+// bias and GL 1.3's GL_COMBINE parameters (tables 3.24-3.26; ARB_texture_env_combine,
+// ARB_texture_env_dot3, ARB_texture_env_crossbar: GL_COMBINE_RGB / _ALPHA, GL_SOURCEn_RGB /
+// _ALPHA, GL_OPERANDn_RGB / _ALPHA, GL_RGB_SCALE, GL_ALPHA_SCALE), checked as Mesa checks them,
+// and the combine's form in the core (TextureCombine), which computes the environment on both
+// pipelines (texture.hpp's apply_texture_env, apply_texture_combine).
+#include <algorithm>
+
+#include "gl/generated/exec.hpp"
+#include "gl/generated/save.hpp"
 #include "gl/src/context.hpp"
+#include "gl/src/convert.hpp"
 #include "gl/src/texture.hpp"
 
 namespace shadelab::gl {
@@ -67,8 +74,8 @@ CombineOperand core_operand(GLenum o) {
 // An enum given as a float (glTexEnvf), truncated as glTexEnv's mode is.
 GLenum as_enum(float v) { return v == v && v >= 0.0f && v < 4294967296.0f ? GLenum(v) : GLenum(0); }
 
-}  // namespace
-
+// glTexEnv's GL_COMBINE parameters: false when `pname` is not one of them; else true, with
+// the active unit's state set from `v` or the error of a wrong value raised.
 bool tex_env_combine(GlContext& c, GLenum pname, float v) {
   TexEnvCombine& s = c.textures.unit().combine;
   const GLenum e = as_enum(v);
@@ -93,6 +100,7 @@ bool tex_env_combine(GlContext& c, GLenum pname, float v) {
   return true;
 }
 
+// glGetTexEnv's GL_COMBINE parameters: false when `pname` is not one of them.
 bool get_tex_env_combine(const TextureUnitState& u, GLenum pname, float& out) {
   const TexEnvCombine& s = u.combine;
   int i;
@@ -108,6 +116,55 @@ bool get_tex_env_combine(const TextureUnitState& u, GLenum pname, float& out) {
   return true;
 }
 
+// glTexEnv (GL 1.1 section 3.8.9). A scalar GL_TEXTURE_ENV_COLOR sets (v, 0, 0, 0), as Mesa's.
+// GL 1.4's GL_TEXTURE_FILTER_CONTROL target holds the unit's GL_TEXTURE_LOD_BIAS, kept as
+// given (section 3.8.8 clamps the sum when sampling).
+void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
+  if (target == GL_TEXTURE_FILTER_CONTROL) {
+    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
+    if (!v) return c.set_error(GL_INVALID_VALUE);
+    c.textures.unit().lod_bias = finite_or_zero(v[0]);
+    return;
+  }
+  if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
+  if (!v) return c.set_error(GL_INVALID_VALUE);
+  if (pname == GL_TEXTURE_ENV_MODE) {
+    const GLint m = enum_param(v[0], false);
+    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE && m != GL_ADD && m != GL_COMBINE) {
+      return c.set_error(GL_INVALID_ENUM);  // (GL_ADD, GL_COMBINE: GL 1.3)
+    }
+    c.textures.unit().env_mode = GLenum(m);
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    for (int i = 0; i < 4; ++i) c.textures.unit().env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
+  } else if (!tex_env_combine(c, pname, v[0])) {
+    c.set_error(GL_INVALID_ENUM);
+  }
+}
+
+// glGetTexEnv. The bias is rounded by glGetTexEnviv, as the specification converts floats
+// (section 6.1.2); Mesa 22 truncates it.
+template <class T>
+void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
+  float v[4] = {float(c.textures.unit().env_mode), 0, 0, 0};
+  int n = 1;
+  if (target == GL_TEXTURE_FILTER_CONTROL) {
+    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
+    v[0] = c.textures.unit().lod_bias;
+  } else if (target != GL_TEXTURE_ENV) {
+    return c.set_error(GL_INVALID_ENUM);
+  } else if (pname == GL_TEXTURE_ENV_COLOR) {
+    for (int i = 0; i < 4; ++i) v[i] = c.textures.unit().env_color[i];
+    n = 4;
+  } else if (pname != GL_TEXTURE_ENV_MODE && !get_tex_env_combine(c.textures.unit(), pname, v[0])) {
+    return c.set_error(GL_INVALID_ENUM);
+  }
+  if (!params) return c.set_error(GL_INVALID_VALUE);
+  write_gl_values(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
+}
+
+}  // namespace
+
+
 TextureCombine core_combine(const TexEnvCombine& s) {
   TextureCombine c;
   c.rgb = core_function(s.rgb);
@@ -122,5 +179,26 @@ TextureCombine core_combine(const TexEnvCombine& s) {
   c.alpha_scale = s.alpha_scale;
   return c;
 }
+
+void exec::TexEnvf(GlContext& c, GLenum target, GLenum pname, GLfloat param) {
+  const float v[4] = {param, 0, 0, 0};
+  tex_env(c, target, pname, v);
+}
+void exec::TexEnvi(GlContext& c, GLenum target, GLenum pname, GLint param) {
+  const float v[4] = {float(param), 0, 0, 0};
+  tex_env(c, target, pname, v);
+}
+void exec::TexEnvfv(GlContext& c, GLenum target, GLenum pname, const GLfloat* params) { tex_env(c, target, pname, params); }
+void exec::TexEnviv(GlContext& c, GLenum target, GLenum pname, const GLint* params) {
+  float v[4] = {0, 0, 0, 0};
+  int n = pname == GL_TEXTURE_ENV_COLOR ? 4 : 1;
+  if (params) to_floats(params, n, pname == GL_TEXTURE_ENV_COLOR, v);
+  tex_env(c, target, pname, params ? v : nullptr);
+}
+std::size_t save_count::TexEnvfv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
+std::size_t save_count::TexEnviv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
+
+void exec::GetTexEnvfv(GlContext& c, GLenum target, GLenum pname, GLfloat* params) { get_tex_env(c, target, pname, params); }
+void exec::GetTexEnviv(GlContext& c, GLenum target, GLenum pname, GLint* params) { get_tex_env(c, target, pname, params); }
 
 }  // namespace shadelab::gl

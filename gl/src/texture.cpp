@@ -1,10 +1,9 @@
-// Texture objects, their parameters and the texture environment (GL 1.1 sections 3.8.3,
-// 3.8.8, 3.8.9; GL 1.5 sections 3.8.4, 3.8.8, 3.8.10, 3.8.13): glGen/Bind/Delete/IsTexture,
-// glPrioritizeTextures, glAreTexturesResident, glTexParameter* (with GL 1.2's LOD clamps and
-// level range, GL 1.3's border clamp, GL 1.4's mirrored repeat, LOD bias and mipmap
-// generation), glTexEnv* (GL 1.4's GL_TEXTURE_FILTER_CONTROL bias) and their queries, and
-// which texture the pipeline samples. Images are teximage.cpp's; sampling and the
-// environment's arithmetic are the core's (texture.hpp).
+// Texture objects and their parameters (GL 1.1 sections 3.8.3, 3.8.8; GL 1.5 sections 3.8.4,
+// 3.8.8, 3.8.10): glGen/Bind/Delete/IsTexture, glPrioritizeTextures, glAreTexturesResident,
+// glTexParameter* (with GL 1.2's LOD clamps and level range, GL 1.3's border clamp, GL 1.4's
+// mirrored repeat, LOD bias and mipmap generation) and their queries, and which texture the
+// pipeline samples. Images are teximage.cpp's, the environment texenv.cpp's; sampling is the
+// core's (texture.hpp).
 #include "gl/src/texture.hpp"
 
 #include <algorithm>
@@ -53,14 +52,6 @@ GLenum wrap_enum(TextureWrap w) {
     case TextureWrap::kMirroredRepeat: return GL_MIRRORED_REPEAT;
   }
   return GL_REPEAT;
-}
-
-// An enum-valued parameter given as a float: glTexParameterf rounds it, the vector forms
-// truncate (Mesa's texparam.c).
-GLint enum_param(float v, bool rounded) {
-  if (!(v == v)) return 0;
-  if (rounded) v = v > 0.0f ? v + 0.5f : v - 0.5f;
-  return v >= float(INT_MAX) ? INT_MAX : v <= float(INT_MIN) ? INT_MIN : GLint(v);
 }
 
 void set_wrap(GlContext& c, TextureWrap& wrap, GLint e) {
@@ -161,52 +152,6 @@ int get_tex_parameter(const TextureObject& t, GLenum pname, float* v) {
   }
 }
 
-// glTexEnv (GL 1.1 section 3.8.9). A scalar GL_TEXTURE_ENV_COLOR sets (v, 0, 0, 0), as Mesa's.
-// GL 1.4's GL_TEXTURE_FILTER_CONTROL target holds the unit's GL_TEXTURE_LOD_BIAS, kept as
-// given (section 3.8.8 clamps the sum when sampling).
-void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
-  if (target == GL_TEXTURE_FILTER_CONTROL) {
-    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
-    if (!v) return c.set_error(GL_INVALID_VALUE);
-    c.textures.unit().lod_bias = finite_or_zero(v[0]);
-    return;
-  }
-  if (target != GL_TEXTURE_ENV) return c.set_error(GL_INVALID_ENUM);
-  if (!v) return c.set_error(GL_INVALID_VALUE);
-  if (pname == GL_TEXTURE_ENV_MODE) {
-    const GLint m = enum_param(v[0], false);
-    if (m != GL_MODULATE && m != GL_DECAL && m != GL_BLEND && m != GL_REPLACE && m != GL_ADD && m != GL_COMBINE) {
-      return c.set_error(GL_INVALID_ENUM);  // (GL_ADD, GL_COMBINE: GL 1.3)
-    }
-    c.textures.unit().env_mode = GLenum(m);
-  } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    for (int i = 0; i < 4; ++i) c.textures.unit().env_color[i] = std::clamp(finite_or_zero(v[i]), 0.0f, 1.0f);
-  } else if (!tex_env_combine(c, pname, v[0])) {
-    c.set_error(GL_INVALID_ENUM);
-  }
-}
-
-// glGetTexEnv. The bias is rounded by glGetTexEnviv, as the specification converts floats
-// (section 6.1.2); Mesa 22 truncates it.
-template <class T>
-void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
-  float v[4] = {float(c.textures.unit().env_mode), 0, 0, 0};
-  int n = 1;
-  if (target == GL_TEXTURE_FILTER_CONTROL) {
-    if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
-    v[0] = c.textures.unit().lod_bias;
-  } else if (target != GL_TEXTURE_ENV) {
-    return c.set_error(GL_INVALID_ENUM);
-  } else if (pname == GL_TEXTURE_ENV_COLOR) {
-    for (int i = 0; i < 4; ++i) v[i] = c.textures.unit().env_color[i];
-    n = 4;
-  } else if (pname != GL_TEXTURE_ENV_MODE && !get_tex_env_combine(c.textures.unit(), pname, v[0])) {
-    return c.set_error(GL_INVALID_ENUM);
-  }
-  if (!params) return c.set_error(GL_INVALID_VALUE);
-  write_gl_values(v, n, pname == GL_TEXTURE_ENV_COLOR, params);
-}
-
 template <class T>
 void get_tex_parameter_call(GlContext& c, GLenum target, GLenum pname, T* params) {
   const TextureObject* t = bound_texture(c, target);
@@ -216,17 +161,6 @@ void get_tex_parameter_call(GlContext& c, GLenum target, GLenum pname, T* params
   if (n == 0) return c.set_error(GL_INVALID_ENUM);
   if (!params) return c.set_error(GL_INVALID_VALUE);
   write_gl_values(v, n, pname == GL_TEXTURE_BORDER_COLOR, params);
-}
-
-template <class T>
-void to_floats(const T* in, int n, bool color, float* out) {
-  for (int i = 0; i < n; ++i) {
-    if constexpr (std::is_integral_v<T>) {
-      out[i] = color ? int_to_color(in[i]) : float(in[i]);
-    } else {
-      out[i] = float(in[i]);
-    }
-  }
 }
 
 // The texture of a target if it is complete (GL 1.5 section 3.8.10; every level of the
@@ -247,6 +181,14 @@ const Texture* complete_texture(TextureObject& t) {
 }
 
 }  // namespace
+
+// An enum-valued parameter given as a float: glTexParameterf rounds it, the vector forms
+// truncate (Mesa's texparam.c).
+GLint enum_param(float v, bool rounded) {
+  if (!(v == v)) return 0;
+  if (rounded) v = v > 0.0f ? v + 0.5f : v - 0.5f;
+  return v >= float(INT_MAX) ? INT_MAX : v <= float(INT_MIN) ? INT_MIN : GLint(v);
+}
 
 TextureObject* bound_texture(GlContext& c, GLenum target) {
   if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
@@ -490,29 +432,9 @@ void exec::GetTexParameteriv(GlContext& c, GLenum target, GLenum pname, GLint* p
   get_tex_parameter_call(c, target, pname, params);
 }
 
-void exec::TexEnvf(GlContext& c, GLenum target, GLenum pname, GLfloat param) {
-  const float v[4] = {param, 0, 0, 0};
-  tex_env(c, target, pname, v);
-}
-void exec::TexEnvi(GlContext& c, GLenum target, GLenum pname, GLint param) {
-  const float v[4] = {float(param), 0, 0, 0};
-  tex_env(c, target, pname, v);
-}
-void exec::TexEnvfv(GlContext& c, GLenum target, GLenum pname, const GLfloat* params) { tex_env(c, target, pname, params); }
-void exec::TexEnviv(GlContext& c, GLenum target, GLenum pname, const GLint* params) {
-  float v[4] = {0, 0, 0, 0};
-  int n = pname == GL_TEXTURE_ENV_COLOR ? 4 : 1;
-  if (params) to_floats(params, n, pname == GL_TEXTURE_ENV_COLOR, v);
-  tex_env(c, target, pname, params ? v : nullptr);
-}
 // How many values the vector forms read, for their display-list savers: the first value
 // decides, as in the commands themselves.
 std::size_t save_count::TexParameterfv(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
 std::size_t save_count::TexParameteriv(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
-std::size_t save_count::TexEnvfv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
-std::size_t save_count::TexEnviv(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
-
-void exec::GetTexEnvfv(GlContext& c, GLenum target, GLenum pname, GLfloat* params) { get_tex_env(c, target, pname, params); }
-void exec::GetTexEnviv(GlContext& c, GLenum target, GLenum pname, GLint* params) { get_tex_env(c, target, pname, params); }
 
 }  // namespace shadelab::gl

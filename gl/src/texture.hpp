@@ -44,13 +44,11 @@ unsigned textured_units(GlContext& c);
 /// while draws that read them wait, and texture_changing finishes them before they change.
 void texture_draw_state(GlContext& c, ShadeState& shade);
 
-/// glTexEnv's GL_COMBINE parameters (GL 1.3 section 3.8.13, texenv_combine.cpp): false when
-/// `pname` is not one of them; else true, with the active unit's state set from `v` or the
-/// error of a wrong value raised.
-bool tex_env_combine(GlContext& c, GLenum pname, float v);
-/// glGetTexEnv's GL_COMBINE parameters: false when `pname` is not one of them.
-bool get_tex_env_combine(const TextureUnitState& u, GLenum pname, float& out);
-/// The core's form of a unit's GL_COMBINE environment.
+/// An enum-valued parameter given as a float: glTexParameterf rounds it, the vector forms
+/// truncate (Mesa's texparam.c).
+GLint enum_param(float v, bool rounded);
+
+/// The core's form of a unit's GL_COMBINE environment (texenv.cpp).
 TextureCombine core_combine(const TexEnvCombine& c);
 
 /// Call before `t`'s texels or parameters change: the waiting draws that read it are drawn
