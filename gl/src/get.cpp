@@ -438,7 +438,7 @@ void exec::GetPointerv(GlContext& c, GLenum pname, void** params) {
 // gl/api/config.toml's extensions.
 const GLubyte* exec::GetString(GlContext& c, GLenum name) {
   static const char* const kVendor = "shadelab";
-  static const char* const kRenderer = "shadelab software rasterizer (OpenGL 1.1 fixed function)";
+  static const char* const kRenderer = "shadelab software rasterizer (OpenGL " SHADELAB_GL_VERSION_NUMBER " fixed function)";
   static const char* const kVersion = SHADELAB_GL_VERSION_NUMBER " shadelab " SHADELAB_VERSION;
   static const char* const kExtensions = SHADELAB_GL_EXTENSIONS;  // gl/api/config.toml
   const char* result = nullptr;
