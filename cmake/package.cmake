@@ -20,14 +20,15 @@ The lighting, shading and materials of classic OpenGL, rendered on the CPU, head
 and exactly: the shadelab command (render, sweep, gallery, serve, run), the core C++
 library with its headers, libshadelab-gl (OpenGL 1.1 and OSMesa, its headers apart
 from Mesa's), GLUT's shapes, shadelab's GLVND vendors (GLX, EGL), libOSMesa.so.8, a
-CMake package and pkg-config files.")
+CMake package, pkg-config files and the Python package (import shadelab).")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_STRIP_FILES ON)  # debug information stays in the build
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION graphics)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# fonts-dejavu-core: the contact sheets' labels; then the development packages (above).
+# fonts-dejavu-core: the contact sheets' labels; python3 and python3-numpy: the Python
+# package; then the development packages (above).
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "fonts-dejavu-core, libglm-dev, libpng-dev, libjpeg62-turbo-dev, libhwy-dev, libtinyobjloader-dev, libstb-dev")
+    "fonts-dejavu-core, python3, python3-numpy, libglm-dev, libpng-dev, libjpeg62-turbo-dev, libhwy-dev, libtinyobjloader-dev, libstb-dev")
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "xvfb, pkg-config")  # shadelab run --xvfb; the .pc files
 include(CPack)

@@ -21,6 +21,9 @@ PACKAGES=(
   # GLUT and GLU programs, Xvfb, and Mesa's own GLX vendor (llvmpipe) to compare with
   libx11-dev libxext-dev libglvnd-dev freeglut3-dev libglu1-mesa-dev xvfb libgl1-mesa-dri libglx-mesa0
   piglit mesa-utils  # tests/piglit/run.sh: piglit's GL 1.x tests, glxinfo for the GL version
+  # the Python module (python/): pybind11, numpy; its tests run with pytest, the example
+  # notebook with nbclient on an IPython kernel
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-nbformat python3-ipykernel
   gnuplot-nox     # bench/run.sh plots
   valgrind        # bench/instructions.sh: instructions per frame, steady on a noisy machine
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)

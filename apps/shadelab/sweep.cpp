@@ -8,6 +8,11 @@ namespace shadelab::cli {
 
 namespace {
 
+// The request's scene with `options`: from its file, or from its text.
+LoadResult load(const SweepRequest& r, const LoadOptions& options) {
+  return r.scene_text ? parse_scene(*r.scene_text, r.scene, r.base_dir, options) : load_scene_file(r.scene, options);
+}
+
 std::vector<std::string> split_top_level(const std::string& s) {
   std::vector<std::string> out;
   std::string cur;
@@ -62,7 +67,7 @@ bool validate(const SweepRequest& r, Diagnostics& diags) {
   LoadOptions base;
   base.overrides = r.overrides;
   if (r.samples) base.overrides.push_back("image.samples=" + std::to_string(*r.samples));
-  LoadResult plain = load_scene_file(r.scene, base);
+  LoadResult plain = load(r, base);
   if (!plain.scene) {
     diags.append(plain.diagnostics);
     return false;
@@ -80,7 +85,7 @@ bool validate(const SweepRequest& r, Diagnostics& diags) {
       opts.overrides = r.overrides;
       opts.overrides.push_back(v.key + "=" + value);
       if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
-      LoadResult res = load_scene_file(r.scene, opts);
+      LoadResult res = load(r, opts);
       if (!res.scene) relabel(res.diagnostics, diags, "--vary");
       if (!diags.empty()) return false;  // one bad key gives the same error for every value
     }
@@ -150,7 +155,7 @@ std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnost
     opts.overrides.insert(opts.overrides.end(), c.overrides.begin(), c.overrides.end());
     // Through the reader, so samples are checked (square numbers, pixel limit) like any value.
     if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
-    LoadResult res = load_scene_file(r.scene, opts);
+    LoadResult res = load(r, opts);
     if (!res.scene) {
       relabel(res.diagnostics, diags, "--vary");
       return std::nullopt;

@@ -24,7 +24,11 @@ struct Variation {
 bool parse_variation(const std::string& text, Variation& out, std::string* error);
 
 struct SweepRequest {
-  std::string scene;
+  std::string scene;                    ///< the scene file (or, with `scene_text`, its name in messages)
+  /// The scene's JSON itself, when it is not read from the file `scene` (the Python module's
+  /// scenes made from dicts); mesh and texture paths are then resolved against `base_dir`.
+  std::optional<std::string> scene_text;
+  std::string base_dir = ".";
   std::vector<Variation> vary;          ///< one or two keys
   std::vector<std::string> overrides;   ///< --set, applied to every picture
   std::optional<ShadingMode> shading;   ///< --shading

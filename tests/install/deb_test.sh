@@ -35,6 +35,7 @@ step "$(basename "$deb"), $(stat -c %s "$deb") bytes"
 
 # Contents. The library folder is the build's CMAKE_INSTALL_LIBDIR (lib, or lib/<multiarch>).
 dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|' >"$out/files.txt"
+grep -q 'dist-packages/shadelab/__init__\.py$' "$out/files.txt" || fail "no Python package in the package"
 lib=$(grep '/libshadelab\.a$' "$out/files.txt" | head -1)
 [ -n "$lib" ] || fail "no libshadelab.a in the package"
 libdir=$(dirname "$lib")

@@ -50,6 +50,17 @@ for f in bin/shadelab "$libdir"/libshadelab-gl.so.0 "$libdir"/libGLX_shadelab.so
   [[ "$dynamic" != *"$build"* ]] || fail "$f has the build folder in its run path"
 done
 
+step "the installed Python package"
+package=$(cd "$prefix" && find . -path '*dist-packages/shadelab/__init__.py' | head -1)
+[ -n "$package" ] || fail "the Python package (shadelab/__init__.py under dist-packages) not installed"
+site=$prefix/$(dirname "$(dirname "${package#./}")")
+ls "$site"/shadelab/_shadelab*.so >/dev/null 2>&1 || fail "the Python package's native module not installed"
+(cd "$out" && PYTHONPATH=$site /usr/bin/python3 -c "
+import shadelab
+image = shadelab.render('$prefix/share/shadelab/scenes/teapot.json', size=(64, 48))
+assert image.shape == (48, 64, 4) and shadelab.__file__.startswith('$site'), shadelab.__file__
+") || fail "the installed Python package does not render"
+
 step "the installed command"
 "$prefix/bin/shadelab" render "$prefix/share/shadelab/scenes/teapot.json" --size 64x48 \
   -o "$out/teapot.png" >/dev/null
