@@ -1,4 +1,5 @@
-// PNG encoding through libpng and atomic file writes (reading is read_image.cpp's).
+// PNG encoding through libpng and atomic file writes (reading is read_image.cpp's; animated
+// PNG is write_apng.cpp's).
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -45,16 +46,7 @@ std::vector<std::uint8_t> encode_png(const Image& image) {
   return out;
 }
 
-bool write_png(const Image& image, const std::string& path, std::string* error) {
-  if (image.width <= 0 || image.height <= 0) {
-    if (error) *error = "cannot write an empty image";
-    return false;
-  }
-  std::vector<std::uint8_t> bytes = encode_png(image);
-  if (bytes.empty()) {
-    if (error) *error = "PNG encoding failed";
-    return false;
-  }
+bool write_file_atomically(const std::vector<std::uint8_t>& bytes, const std::string& path, std::string* error) {
   // Write beside the target, then rename over it: readers never see a partial file.
   std::string tmp = path + ".tmp" + std::to_string(std::random_device{}() & 0xffffff);
   {
@@ -77,6 +69,19 @@ bool write_png(const Image& image, const std::string& path, std::string* error) 
     return false;
   }
   return true;
+}
+
+bool write_png(const Image& image, const std::string& path, std::string* error) {
+  if (image.width <= 0 || image.height <= 0) {
+    if (error) *error = "cannot write an empty image";
+    return false;
+  }
+  std::vector<std::uint8_t> bytes = encode_png(image);
+  if (bytes.empty()) {
+    if (error) *error = "PNG encoding failed";
+    return false;
+  }
+  return write_file_atomically(bytes, path, error);
 }
 
 }  // namespace shadelab
