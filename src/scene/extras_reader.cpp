@@ -17,7 +17,9 @@ constexpr std::size_t kMaxShadows = 255;  // one stencil value each
 
 // Image rows run top down; texture row 0 is t = 0, the bottom of the picture.
 TextureLevel bottom_up(const Image& img) {
-  TextureLevel level{img.width, img.height, {}};
+  TextureLevel level;
+  level.width = img.width;
+  level.height = img.height;
   for (int y = img.height - 1; y >= 0; --y) {
     level.rgba.insert(level.rgba.end(), img.pixel(0, y), img.pixel(0, y) + std::size_t(img.width) * 4);
   }

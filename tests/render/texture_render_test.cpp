@@ -12,7 +12,10 @@ namespace {
 
 TEST(TextureRender, SeparateSpecularKeepsHighlightsWhiteOnADarkTexture) {
   auto dark = std::make_shared<Texture>();
-  dark->levels.push_back({1, 1, {40, 20, 10, 255}});  // a dark brown texel everywhere
+  TextureLevel texel;  // a dark brown texel everywhere
+  texel.width = texel.height = 1;
+  texel.rgba = {40, 20, 10, 255};
+  dark->levels.push_back(texel);
   dark->min_filter = dark->mag_filter = TextureFilter::kNearest;
   Scene s;
   s.width = s.height = 32;
