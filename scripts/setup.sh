@@ -24,6 +24,7 @@ PACKAGES=(
   # the Python module (python/): pybind11, numpy; its tests run with pytest, the example
   # notebook with nbclient on an IPython kernel
   pybind11-dev python3-dev python3-numpy python3-pytest python3-nbclient python3-nbformat python3-ipykernel
+  ffmpeg parallel # shadelab animate's MP4/WebM output; GNU parallel in docs/scale-out.md (tested)
   gnuplot-nox     # bench/run.sh plots
   valgrind        # bench/instructions.sh: instructions per frame, steady on a noisy machine
   chromium firefox-esr nodejs  # the lab's browser tests (driven by playwright-core and puppeteer-core from npm)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "shadelab/contact_sheet.hpp"
 
@@ -28,6 +29,9 @@ bool add_size_overrides(const std::string& size, const char* command,
 /// Loads the default TrueType font, printing the error for `command` on failure.
 std::unique_ptr<Font> load_default_font(const char* command);
 
+/// A progress bar on standard error when it is a terminal: `done` of `total`, and `label`.
+void progress_bar(int done, int total, const std::string& label);
+
 Action add_render_command(CLI::App& app);
 Action add_sweep_command(CLI::App& app);
 Action add_materials_command(CLI::App& app);
@@ -35,5 +39,12 @@ Action add_gallery_command(CLI::App& app);
 Action add_shadow_matrix_command(CLI::App& app);
 Action add_serve_command(CLI::App& app);
 Action add_run_command(CLI::App& app);
+Action add_animate_command(CLI::App& app);
+Action add_merge_command(CLI::App& app);
+
+/// Assembling a sharded batch (`shadelab merge`): each command's half, from its manifest.
+int merge_sweep(const nlohmann::json& manifest, const std::string& output);
+int merge_animate(const nlohmann::json& manifest, const std::string& output);
+int merge_gallery(const nlohmann::json& manifest, const std::string& output);
 
 }  // namespace shadelab::cli

@@ -1,5 +1,8 @@
-// Helpers shared by the subcommands: --size parsing and the default font.
+// Helpers shared by the subcommands: --size parsing, the default font and the progress bar.
+#include <unistd.h>
+
 #include <cctype>
+#include <cstdio>
 #include <iostream>
 
 #include "commands.hpp"
@@ -38,6 +41,16 @@ std::unique_ptr<Font> load_default_font(const char* command) {
   std::unique_ptr<Font> font = Font::load(Font::kDefaultPath, &error);
   if (!font) std::cerr << "shadelab " << command << ": " << error << "\n";
   return font;
+}
+
+void progress_bar(int done, int total, const std::string& label) {
+  if (!isatty(STDERR_FILENO)) return;
+  const int width = 30;
+  int filled = total > 0 ? done * width / total : width;
+  std::fprintf(stderr, "\r[%s%s] %d/%d %-40.40s", std::string(filled, '#').c_str(),
+               std::string(width - filled, ' ').c_str(), done, total, label.c_str());
+  if (done == total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
 }
 
 }  // namespace shadelab::cli

@@ -15,8 +15,10 @@ struct Command {
 constexpr Command kCommands[] = {
     {"render", shadelab::cli::add_render_command},
     {"sweep", shadelab::cli::add_sweep_command},
+    {"animate", shadelab::cli::add_animate_command},
     {"materials", shadelab::cli::add_materials_command},
     {"gallery", shadelab::cli::add_gallery_command},
+    {"merge", shadelab::cli::add_merge_command},
     {"shadow-matrix", shadelab::cli::add_shadow_matrix_command},
     {"serve", shadelab::cli::add_serve_command},
     {"run", shadelab::cli::add_run_command},
@@ -32,6 +34,7 @@ int main(int argc, char** argv) {
       "  shadelab render scenes/teapot.json -o teapot.png\n"
       "  shadelab render scenes/teapot.json --shading flat --size 800x600 -o flat.png\n"
       "  shadelab sweep scenes/teapot.json --vary shading=flat,gouraud,phong -o modes.png\n"
+      "  shadelab animate scenes/lecture/10-spot-cutoff.json --vary 'lights[0].spot.cutoff=5:60' -o cutoff.png\n"
       "  shadelab materials --sheet materials.png\n"
       "  shadelab run --xvfb --frames 1 --capture 'out/frame%04d.png' -- ./glut_program\n"
       "Run 'shadelab COMMAND --help' for a command's options.");

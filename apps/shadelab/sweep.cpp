@@ -55,11 +55,6 @@ void relabel(Diagnostics& from, Diagnostics& to, const std::string& label) {
   }
 }
 
-struct Cell {
-  std::vector<std::string> overrides;
-  std::optional<ShadingMode> shading;
-  std::string label;
-};
 
 // Checks the scene with the shared options first (errors against the file or --set), then each
 // key/value alone so an error names the --vary value at fault.
@@ -93,21 +88,21 @@ bool validate(const SweepRequest& r, Diagnostics& diags) {
   return diags.empty();
 }
 
-void add_assignment(Cell& c, const std::string& key, const std::string& value) {
+void add_assignment(SweepCell& c, const std::string& key, const std::string& value) {
   if (key == "shading") c.shading = shading_from(value);
   else c.overrides.push_back(key + "=" + value);
   c.label += (c.label.empty() ? "" : ", ") + short_key(key) + " = " + value;
 }
 
 // Row-major cells: the first key varies along a row, the second (if any) down the columns.
-std::vector<Cell> combinations(const SweepRequest& r) {
-  std::vector<Cell> cells;
-  if (r.vary.empty()) return {Cell{}};
+std::vector<SweepCell> combinations(const SweepRequest& r) {
+  std::vector<SweepCell> cells;
+  if (r.vary.empty()) return {SweepCell{}};
   const Variation& across = r.vary[0];
   std::vector<std::string> down = r.vary.size() > 1 ? r.vary[1].values : std::vector<std::string>{""};
   for (const std::string& row_value : down) {
     for (const std::string& value : across.values) {
-      Cell c;
+      SweepCell c;
       add_assignment(c, across.key, value);
       if (r.vary.size() > 1) add_assignment(c, r.vary[1].key, row_value);
       cells.push_back(c);
@@ -140,33 +135,55 @@ bool parse_variation(const std::string& text, Variation& out, std::string* error
   return true;
 }
 
-std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnostics& diags,
-                               const std::function<void(int, int, const std::string&)>& progress) {
+std::optional<std::vector<SweepCell>> sweep_cells(const SweepRequest& r, Diagnostics& diags) {
   if (!validate(r, diags)) return std::nullopt;
-  std::vector<Cell> cells = combinations(r);
+  std::vector<SweepCell> cells = combinations(r);
   if (r.labels.size() == cells.size()) {
     for (std::size_t i = 0; i < cells.size(); ++i) cells[i].label = r.labels[i];
   }
+  return cells;
+}
+
+std::optional<Image> render_sweep_cell(const SweepRequest& r, const SweepCell& c, Diagnostics& diags) {
+  LoadOptions opts;
+  opts.overrides = r.overrides;
+  opts.overrides.insert(opts.overrides.end(), c.overrides.begin(), c.overrides.end());
+  // Through the reader, so samples are checked (square numbers, pixel limit) like any value.
+  if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
+  LoadResult res = load(r, opts);
+  if (!res.scene) {
+    relabel(res.diagnostics, diags, "--vary");
+    return std::nullopt;
+  }
+  RenderOptions ro;
+  ro.shading = c.shading ? c.shading : r.shading;
+  return render_scene(*res.scene, ro);
+}
+
+Image sweep_sheet(const SweepRequest& r, const std::vector<SweepCell>& cells, std::vector<Image> pictures,
+                  const Font& font) {
   std::vector<SheetCell> sheet;
-  int done = 0;
-  for (const Cell& c : cells) {
-    LoadOptions opts;
-    opts.overrides = r.overrides;
-    opts.overrides.insert(opts.overrides.end(), c.overrides.begin(), c.overrides.end());
-    // Through the reader, so samples are checked (square numbers, pixel limit) like any value.
-    if (r.samples) opts.overrides.push_back("image.samples=" + std::to_string(*r.samples));
-    LoadResult res = load(r, opts);
-    if (!res.scene) {
-      relabel(res.diagnostics, diags, "--vary");
-      return std::nullopt;
-    }
-    RenderOptions ro;
-    ro.shading = c.shading ? c.shading : r.shading;
-    sheet.push_back({render_scene(*res.scene, ro), c.label});
-    if (progress) progress(++done, int(cells.size()), c.label);
+  for (std::size_t i = 0; i < cells.size() && i < pictures.size(); ++i) {
+    sheet.push_back({std::move(pictures[i]), cells[i].label});
   }
   int columns = r.columns > 0 ? r.columns : int(r.vary.empty() ? 1 : r.vary[0].values.size());
   return make_contact_sheet(sheet, columns, font, r.title);
+}
+
+std::optional<Image> run_sweep(const SweepRequest& r, const Font& font, Diagnostics& diags,
+                               const std::function<void(int, int, const std::string&)>& progress,
+                               std::vector<Image>* pictures_out) {
+  std::optional<std::vector<SweepCell>> cells = sweep_cells(r, diags);
+  if (!cells) return std::nullopt;
+  std::vector<Image> pictures;
+  for (const SweepCell& c : *cells) {
+    std::optional<Image> picture = render_sweep_cell(r, c, diags);
+    if (!picture) return std::nullopt;
+    pictures.push_back(std::move(*picture));
+    if (progress) progress(int(pictures.size()), int(cells->size()), c.label);
+  }
+  if (pictures_out) *pictures_out = pictures;
+  return sweep_sheet(r, *cells, std::move(pictures), font);
 }
 
 }  // namespace shadelab::cli

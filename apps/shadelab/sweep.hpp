@@ -38,10 +38,32 @@ struct SweepRequest {
   std::vector<std::string> labels;      ///< replace the "key = value" labels, in cell order
 };
 
-/// Renders every combination and makes the sheet. Problems go to `diags` (with file "--vary"
-/// for a bad key or value); `progress(done, total, label)` is called after each picture.
+/// One picture of a sweep: the overrides and shading of its values, and its label.
+struct SweepCell {
+  std::vector<std::string> overrides;
+  std::optional<ShadingMode> shading;
+  std::string label;
+};
+
+/// Checks the request (the scene, then each key and value alone) and lists its pictures in
+/// the sheet's order: the first key along a row, the second down the columns. Problems go to
+/// `diags` (with file "--vary" for a bad key or value).
+std::optional<std::vector<SweepCell>> sweep_cells(const SweepRequest& request, Diagnostics& diags);
+
+/// One picture of the sweep.
+std::optional<Image> render_sweep_cell(const SweepRequest& request, const SweepCell& cell, Diagnostics& diags);
+
+/// The contact sheet of the pictures, one per cell, in order (the parts of a sharded sweep
+/// give the same sheet as one run).
+Image sweep_sheet(const SweepRequest& request, const std::vector<SweepCell>& cells, std::vector<Image> pictures,
+                  const Font& font);
+
+/// Renders every combination and makes the sheet. Problems go to `diags`;
+/// `progress(done, total, label)` is called after each picture; `pictures`, when given,
+/// receives the pictures themselves.
 std::optional<Image> run_sweep(const SweepRequest& request, const Font& font, Diagnostics& diags,
-                               const std::function<void(int, int, const std::string&)>& progress);
+                               const std::function<void(int, int, const std::string&)>& progress,
+                               std::vector<Image>* pictures = nullptr);
 
 /// "lights[0].spot.cutoff" -> "cutoff"; the pseudo-key "shading" stays "shading".
 std::string short_key(const std::string& key);
