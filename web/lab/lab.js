@@ -4,7 +4,8 @@
 // in its error messages, so an error lands next to its field.
 "use strict";
 
-const state = { scene: null, presets: [], objFiles: [], seq: 0, inflight: null, pending: false, tess: 32 };
+const state = { scene: null, presets: [], objFiles: [], seq: 0, inflight: null, pending: false, tess: 32,
+                undo: [], redo: [] };
 
 const $ = (id) => document.getElementById(id);
 const clone = (v) => JSON.parse(JSON.stringify(v));
@@ -276,6 +277,7 @@ async function render() {
 }
 let timer = null;
 function changed() {
+  record();
   if (!$("live").checked) return;
   clearTimeout(timer);
   timer = setTimeout(render, 30);
@@ -358,6 +360,101 @@ function glCode() {
   return lines.join("\n");
 }
 
+// ---- share and keep ----------------------------------------------------------------------
+// The whole setup travels in the page's address, as #scene= and the scene file's JSON in
+// base64url (UTF-8), so a link reproduces it; undo and redo step through the setups the
+// edits made (an edit is recorded once the controls are still for 400 ms).
+function encodeScene(scene) {
+  const bytes = new TextEncoder().encode(JSON.stringify(scene));
+  let bin = "";
+  for (const b of bytes) bin += String.fromCharCode(b);
+  return btoa(bin).replace(/\+/g, "-").replace(/\//g, "_").replace(/=+$/, "");
+}
+function decodeScene(text) {
+  const bin = atob(text.replace(/-/g, "+").replace(/_/g, "/"));
+  return JSON.parse(new TextDecoder().decode(Uint8Array.from(bin, (c) => c.charCodeAt(0))));
+}
+function sceneFromAddress() {
+  const m = /(?:^#|&)scene=([A-Za-z0-9_-]+)/.exec(location.hash);
+  if (!m) return null;
+  try { return decodeScene(m[1]); } catch (_) { return null; }
+}
+function updateAddress() {
+  history.replaceState(null, "", `#scene=${encodeScene(sceneForRequest())}`);
+  $("share-link").value = location.href;
+}
+function updateUndoButtons() {
+  $("undo").disabled = state.undo.length < 2;
+  $("redo").disabled = state.redo.length === 0;
+}
+let recordTimer = null;
+function flushRecord() {
+  clearTimeout(recordTimer);
+  recordTimer = null;
+  const now = JSON.stringify(state.scene);
+  if (state.undo[state.undo.length - 1] === now) return;
+  state.undo.push(now);
+  if (state.undo.length > 200) state.undo.shift();
+  state.redo = [];
+  updateUndoButtons();
+  updateAddress();
+}
+function record() {
+  clearTimeout(recordTimer);
+  recordTimer = setTimeout(flushRecord, 400);
+}
+async function restore(text) {
+  clearTimeout(recordTimer);
+  state.scene = JSON.parse(text);
+  buildLights();
+  refresh();
+  updateUndoButtons();
+  updateAddress();
+  await render();
+}
+function undo() {
+  if (recordTimer) flushRecord();  // an edit still settling is the step undone
+  if (state.undo.length < 2) return;
+  state.redo.push(state.undo.pop());
+  restore(state.undo[state.undo.length - 1]);
+}
+function redo() {
+  if (!state.redo.length) return;
+  const next = state.redo.pop();
+  state.undo.push(next);
+  restore(next);
+}
+function onKey(ev) {
+  if (!(ev.ctrlKey || ev.metaKey) || ev.altKey) return;
+  const el = document.activeElement;
+  if (el && (el.tagName === "TEXTAREA" || (el.tagName === "INPUT" && el.type === "text"))) return;
+  const k = ev.key.toLowerCase();
+  if (k === "z" && !ev.shiftKey) { ev.preventDefault(); undo(); }
+  else if ((k === "z" && ev.shiftKey) || k === "y") { ev.preventDefault(); redo(); }
+}
+// The picture at the size and samples chosen, rendered by the server and downloaded as a PNG.
+async function savePicture() {
+  const scene = sceneForRequest();
+  scene.image = { ...(scene.image || {}), width: Number($("save-width").value), height: Number($("save-height").value),
+                  samples: Number($("save-samples").value) };
+  $("status").textContent = "rendering the picture to save…";
+  const r = await fetch("/api/render", { method: "POST", body: JSON.stringify(scene), headers: { "Content-Type": "application/json" } });
+  if (!r.ok) {
+    let body = {};
+    try { body = await r.json(); } catch (_) { body = { errors: [{ message: `HTTP ${r.status}` }] }; }
+    $("status").textContent = "not saved";
+    showErrors(body.errors || []);
+    return;
+  }
+  const a = document.createElement("a");
+  a.href = URL.createObjectURL(await r.blob());
+  a.download = `lab-${scene.image.width}x${scene.image.height}.png`;
+  document.body.append(a);
+  a.click();
+  a.remove();
+  $("status").textContent = `saved ${a.download}`;
+}
+
 // ---- wiring ------------------------------------------------------------------------------
 function onInput(ev) {
   const el = ev.target;
@@ -384,6 +481,10 @@ async function loadScene(scene) {
   buildStatic();
   buildLights();
   refresh();
+  state.undo = [JSON.stringify(state.scene)];
+  state.redo = [];
+  updateUndoButtons();
+  updateAddress();
   await render();
 }
 async function start() {
@@ -428,6 +529,21 @@ async function start() {
     if (!file) return;
     try { await loadScene(JSON.parse(await file.text())); } catch (e) { showErrors([{ message: `${file.name}: ${e.message}` }]); }
   });
-  await loadScene(scene);
+  $("undo").addEventListener("click", undo);
+  $("redo").addEventListener("click", redo);
+  document.addEventListener("keydown", onKey);
+  $("copy-link").addEventListener("click", async () => {
+    updateAddress();
+    try { await navigator.clipboard.writeText(location.href); $("status").textContent = "link copied"; }
+    catch (_) { $("share-link").select(); $("status").textContent = "link selected: copy it with Ctrl+C"; }
+  });
+  $("save-picture").addEventListener("click", savePicture);
+  const linked = sceneFromAddress();
+  try {
+    await loadScene(linked || scene);
+  } catch (e) {  // a link whose scene the controls cannot show
+    await loadScene(scene);
+    showErrors([{ message: `the link's scene cannot be shown: ${e.message}` }]);
+  }
 }
 start();

@@ -2,6 +2,7 @@
 // the page as a student uses it. Run by ctest (test lab_browser):
 //   node lab_browser_test.mjs --cli PATH_TO_shadelab --source REPO_DIR --out OUTPUT_DIR
 // Exit status 0 when every check passes; a screenshot of the page is saved in OUTPUT_DIR.
+import { readFileSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
 
@@ -16,7 +17,7 @@ const browser = await chromium.launch({
   args: ["--no-sandbox", "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"],
 });
 try {
-  const page = await browser.newPage({ viewport: { width: 1400, height: 950 } });
+  const page = await browser.newPage({ viewport: { width: 1400, height: 950 }, acceptDownloads: true });
   page.on("pageerror", (e) => check(false, `no script error (${e.message})`));
   await page.goto(url);
   await page.waitForSelector("#images img");
@@ -72,6 +73,38 @@ try {
   const code = await page.locator("#code").textContent();
   check(code.includes("glLightfv(GL_LIGHT8, GL_DIFFUSE") && code.includes("glMaterialf(GL_FRONT, GL_SHININESS"),
         "show code lists the GL calls");
+
+  // 6. Share and keep: the setup in the address, undo and redo, a picture saved at a size.
+  await page.locator("#code").evaluate((e) => { e.hidden = true; });
+  await cutoff.fill("30");  // a valid setup again (step 4 left an error)
+  await cutoff.dispatchEvent("change");
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  const shininess = page.locator('input.num[data-path="objects[0].material.shininess"]');
+  const shininessBefore = await shininess.inputValue();
+  await shininess.fill("77");
+  await shininess.dispatchEvent("change");
+  await page.waitForFunction(() => { const s = sceneFromAddress(); return s && s.objects[0].material.shininess === 77; });
+  const link = await page.evaluate(() => location.href);
+  const second = await browser.newPage({ viewport: { width: 1400, height: 950 } });
+  await second.goto(link);
+  await second.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  check((await second.locator('input.num[data-path="objects[0].material.shininess"]').inputValue()) === "77",
+        "a link opens the same setup (shininess 77)");
+  await second.close();
+  await page.locator("#undo").click();
+  await page.waitForFunction((v) => document.querySelector('input.num[data-path="objects[0].material.shininess"]').value === v,
+                             shininessBefore);
+  check(await page.evaluate(() => sceneFromAddress().objects[0].material.shininess !== 77), "undo restores the setup and the link");
+  await page.locator("#redo").click();
+  await page.waitForFunction(() => document.querySelector('input.num[data-path="objects[0].material.shininess"]').value === "77");
+  check(true, "redo applies it again");
+  await page.locator("#save-width").fill("320");
+  await page.locator("#save-height").fill("200");
+  await page.locator("#save-samples").selectOption("1");
+  const [download] = await Promise.all([page.waitForEvent("download"), page.locator("#save-picture").click()]);
+  const saved = readFileSync(await download.path());
+  check(saved.readUInt32BE(16) === 320 && saved.readUInt32BE(20) === 200 && download.suggestedFilename() === "lab-320x200.png",
+        `save picture downloads a 320 x 200 PNG (${download.suggestedFilename()}, ${saved.readUInt32BE(16)} x ${saved.readUInt32BE(20)})`);
 
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });

@@ -65,6 +65,30 @@ try {
   await page.waitForSelector(".field-error");
   const error = await page.$eval('[data-path="lights[0].spot.cutoff"] + .field-error', (e) => e.textContent);
   check(/out of range/.test(error || ""), `the error is next to the field: "${error}"`);
+
+  // Share and keep: the setup in the address, a second page opened from it, undo and redo.
+  const setNumber = (path, value) => page.evaluate((p, v) => {
+    const el = document.querySelector(`input[type=number][data-path="${p}"]`);
+    el.value = v;
+    el.dispatchEvent(new Event("change", { bubbles: true }));
+  }, path, value);
+  const shininessField = 'input.num[data-path="objects[0].material.shininess"]';
+  await setNumber("lights[0].spot.cutoff", "30");  // a valid setup again
+  const shininessBefore = await page.$eval(shininessField, (e) => e.value);
+  await setNumber("objects[0].material.shininess", "77");
+  await page.waitForFunction(() => { const s = sceneFromAddress(); return s && s.objects[0].material.shininess === 77; });
+  const link = await page.evaluate(() => location.href);
+  const second = await browser.newPage();
+  await second.goto(link);
+  await second.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  check((await second.$eval(shininessField, (e) => e.value)) === "77", "a link opens the same setup (shininess 77)");
+  await second.close();
+  await page.click("#undo");
+  await page.waitForFunction((f, v) => document.querySelector(f).value === v, {}, shininessField, shininessBefore);
+  check(await page.evaluate(() => sceneFromAddress().objects[0].material.shininess !== 77), "undo restores the setup and the link");
+  await page.click("#redo");
+  await page.waitForFunction((f) => document.querySelector(f).value === "77", {}, shininessField);
+  check(true, "redo applies it again");
   check(errors.length === 0, `no script errors${errors.length ? ": " + errors.join("; ") : ""}`);
   const shot = join(out, "lab_firefox.png");
   await page.screenshot({ path: shot });
