@@ -8,10 +8,13 @@
 
 #include <httplib.h>
 
+#include <algorithm>
 #include <chrono>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -249,7 +252,60 @@ class Lab {
 
   void scene(httplib::Response& res) const { res.set_content(options_.scene_text, "application/json"); }
 
+  // The figures beside the served scene (its folder's *.json but rows.json: the lecture's
+  // figures for the default scene), each with its caption, and the row experiments of that
+  // folder's rows.json, for the page's "lecture" menu.
+  void figures(httplib::Response& res) const {
+    json list = json::array();
+    const std::vector<std::string> files = figure_files();
+    for (const std::string& name : files) {
+      json scene = json::parse(read_file(base_dir_ / name), nullptr, false);
+      const std::string caption = scene.is_object() ? scene.value("caption", "") : "";
+      list.push_back({{"file", name}, {"caption", caption}});
+    }
+    json rows = json::parse(read_file(base_dir_ / "rows.json"), nullptr, false);
+    json out_rows = json::array();
+    if (rows.is_array()) {
+      for (const json& row : rows) {
+        // Rows of scenes the page can open: the figures above.
+        if (!row.is_object() || !row.contains("scene") || !row["scene"].is_string() ||
+            std::find(files.begin(), files.end(), row["scene"].get<std::string>()) == files.end()) {
+          continue;
+        }
+        out_rows.push_back(row);
+      }
+    }
+    res.set_content(text_of(json{{"figures", list}, {"rows", out_rows}}), "application/json");
+  }
+
+  // One of those figures' scene file, by its name (nothing else of the folder).
+  void figure(const std::string& name, httplib::Response& res) const {
+    const std::vector<std::string> files = figure_files();
+    if (std::find(files.begin(), files.end(), name) == files.end()) {
+      return send_error(res, 404, "no figure \"" + name + "\" beside the served scene");
+    }
+    res.set_content(read_file(base_dir_ / name), "application/json");
+  }
+
  private:
+  std::vector<std::string> figure_files() const {
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(base_dir_, ec)) {
+      const std::string name = entry.path().filename().string();
+      if (entry.is_regular_file(ec) && entry.path().extension() == ".json" && name != "rows.json") names.push_back(name);
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  static std::string read_file(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
   LabOptions options_;
   std::unique_ptr<RenderQueue> queue_;
   fs::path base_dir_;
@@ -291,6 +347,8 @@ std::shared_ptr<const void> install_lab(httplib::Server& server, const LabOption
   server.Get("/api/presets", [l](const httplib::Request&, httplib::Response& r) { l->presets(r); });
   server.Get("/api/shapes", [l](const httplib::Request&, httplib::Response& r) { l->shapes(r); });
   server.Get("/api/scene", [l](const httplib::Request&, httplib::Response& r) { l->scene(r); });
+  server.Get("/api/figures", [l](const httplib::Request&, httplib::Response& r) { l->figures(r); });
+  server.Get(R"(/api/figure/([^/]+))", [l](const httplib::Request& q, httplib::Response& r) { l->figure(q.matches[1], r); });
   server.set_exception_handler([](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
     send_error(res, 500, "internal error");
   });

@@ -156,6 +156,34 @@ TEST(LabApi, RendersAScene) {
   EXPECT_NE(flat->body, phong->body);  // the shading override changes the picture
 }
 
+// The figures beside the served scene (the lecture's, for the default scene) with their
+// captions, the rows that open them, and each figure's scene; nothing else of the folder.
+TEST(LabApi, ListsAndServesTheLecturesFigures) {
+  auto c = server().client();
+  auto r = c.Get("/api/figures");
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200);
+  json list = json::parse(r->body);
+  ASSERT_GE(list["figures"].size(), 18u);
+  bool spot = false;
+  for (const json& f : list["figures"]) {
+    EXPECT_NE(f["file"], "rows.json");
+    if (f["file"] == "10-spot-cutoff.json") spot = f["caption"].get<std::string>().rfind("Figure 10", 0) == 0;
+  }
+  EXPECT_TRUE(spot);
+  ASSERT_GE(list["rows"].size(), 8u);
+  for (const json& row : list["rows"]) EXPECT_NE(row["scene"].get<std::string>().find(".json"), std::string::npos);
+  auto figure = c.Get("/api/figure/10-spot-cutoff.json");
+  ASSERT_TRUE(figure);
+  EXPECT_EQ(figure->status, 200);
+  EXPECT_EQ(json::parse(figure->body)["lights"].size(), 1u);
+  for (const char* bad : {"/api/figure/rows.json", "/api/figure/..%2Fteapot.json", "/api/figure/nothing.json"}) {
+    auto no = c.Get(bad);
+    ASSERT_TRUE(no);
+    EXPECT_EQ(no->status, 404) << bad;
+  }
+}
+
 // The explained parts add up, and on a Phong object they are the rendered pixel.
 TEST(LabApi, ExplainedPixelsSumToTheRenderedColour) {
   auto c = server().client();

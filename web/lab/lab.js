@@ -5,7 +5,7 @@
 "use strict";
 
 const state = { scene: null, presets: [], objFiles: [], seq: 0, inflight: null, pending: false, tess: 32,
-                undo: [], redo: [] };
+                undo: [], redo: [], figures: [], rows: [], row: null };
 
 const $ = (id) => document.getElementById(id);
 const clone = (v) => JSON.parse(JSON.stringify(v));
@@ -226,9 +226,11 @@ function showErrors(errors) {
   }
   $("errors").textContent = loose.join("\n");
 }
-async function renderOne(shading, signal) {
-  const q = shading ? `?shading=${shading}` : "";
-  const r = await fetch(`/api/render${q}`, { method: "POST", body: JSON.stringify(sceneForRequest()), signal,
+// One picture: the scene as the controls have it, or a variant of it (another shading, a
+// row's value).
+async function renderOne(variant, signal) {
+  const q = variant.shading ? `?shading=${variant.shading}` : "";
+  const r = await fetch(`/api/render${q}`, { method: "POST", body: JSON.stringify(variant.scene || sceneForRequest()), signal,
                                             headers: { "Content-Type": "application/json" } });
   if (!r.ok) {
     let body = {};
@@ -244,25 +246,28 @@ async function render() {
   if (state.inflight) state.inflight.abort();
   const controller = new AbortController();
   state.inflight = controller;
-  const modes = $("compare").checked ? ["flat", "gouraud", "phong"] : [null];
+  const variants = $("compare").checked ? ["flat", "gouraud", "phong"].map((m) => ({ shading: m, label: m }))
+    : state.row && $("row-strip").checked ? rowVariants() : [{}];
   $("status").textContent = "rendering…";
   const started = performance.now();
   try {
-    const results = await Promise.all(modes.map((m) => renderOne(m, controller.signal)));
+    const results = await Promise.all(variants.map((v) => renderOne(v, controller.signal)));
     if (seq !== state.seq) return;
     clearErrors();
     const images = $("images");
     for (const old of images.querySelectorAll("img")) URL.revokeObjectURL(old.src);
     images.innerHTML = "";
+    images.classList.toggle("strip", variants.length > 3);  // a row: side by side, smaller
     results.forEach((r, i) => {
       const fig = document.createElement("figure");
       const img = document.createElement("img");
       img.src = URL.createObjectURL(r.blob);
-      img.alt = modes[i] || "render";
-      img.dataset.shading = modes[i] || state.scene.objects[0].shading;
-      img.addEventListener("click", (ev) => explain(ev, img));
+      const v = variants[i];
+      img.alt = v.label || "render";
+      img.dataset.shading = v.shading || state.scene.objects[0].shading;
+      if (!v.scene) img.addEventListener("click", (ev) => explain(ev, img));
       fig.append(img);
-      if (modes[i]) { const c = document.createElement("figcaption"); c.textContent = modes[i]; fig.append(c); }
+      if (v.label) { const c = document.createElement("figcaption"); c.textContent = v.label; fig.append(c); }
       images.append(fig);
     });
     const server = results.map((r) => r.ms.toFixed(1)).join(" / ");
@@ -358,6 +363,109 @@ function glCode() {
     cone: `glutSolidCone(${sh.radius}, ${sh.height}, ${sh.slices}, ${sh.stacks});`, cube: `glutSolidCube(${sh.size});` };
   lines.push(draw[sh.type] || `/* draw the ${sh.type} */`);
   return lines.join("\n");
+}
+
+// ---- the lecture's figures and row experiments --------------------------------------------
+// A row (scenes/lecture/rows.json) is one scene with one key taking several values; the
+// slider moves the key through them, "show the whole row" renders them side by side.
+function splitTopLevel(text) {
+  const out = [];
+  let cur = "", depth = 0, inString = false;
+  for (let i = 0; i < text.length; ++i) {
+    const c = text[i];
+    if (inString) {
+      if (c === "\\" && i + 1 < text.length) { cur += c + text[++i]; continue; }
+      if (c === '"') inString = false;
+    } else if (c === '"') inString = true;
+    else if (c === "[" || c === "{") ++depth;
+    else if (c === "]" || c === "}") --depth;
+    else if (c === "," && depth === 0) { out.push(cur); cur = ""; continue; }
+    cur += c;
+  }
+  out.push(cur);
+  return out;
+}
+// A value as --set and --vary read it: JSON, or a bare word.
+function valueOf(text) {
+  try { return JSON.parse(text); } catch (_) { return text.trim(); }
+}
+function assign(scene, key, value) {
+  if (key === "shading") { for (const o of scene.objects) o.shading = value; return; }
+  setPath(scene, key, clone(value));
+}
+function rowVariants() {
+  const r = state.row;
+  return r.values.map((value, i) => {
+    const scene = sceneForRequest();
+    assign(scene, r.key, value);
+    return { scene, label: r.labels[i] };
+  });
+}
+async function fetchFigure(file) {
+  const r = await fetch(`/api/figure/${encodeURIComponent(file)}`);
+  if (!r.ok) throw new Error(`${file}: HTTP ${r.status}`);
+  return r.json();
+}
+async function openFigure(file) {
+  const scene = await fetchFigure(file);
+  state.row = null;
+  $("row").value = "";
+  $("row-controls").hidden = true;
+  $("figure-caption").textContent = scene.caption || "";
+  await loadScene(scene);
+}
+async function openRow(index) {
+  const row = state.rows[index];
+  const scene = await fetchFigure(row.scene);
+  for (const set of row.set || []) {
+    const eq = set.indexOf("=");
+    assign(scene, set.slice(0, eq), valueOf(set.slice(eq + 1)));
+  }
+  const vary = (row.vary || [])[0];
+  $("figure").value = "";
+  $("figure-caption").textContent = row.caption || scene.caption || "";
+  if (!vary) {
+    state.row = null;
+    $("row-controls").hidden = true;
+    await loadScene(scene);
+    return;
+  }
+  const eq = vary.indexOf("=");
+  const key = vary.slice(0, eq), texts = splitTopLevel(vary.slice(eq + 1));
+  const short = key.replace(/^.*\./, "");
+  state.row = { key, values: texts.map(valueOf),
+                labels: (row.labels && row.labels.length === texts.length) ? row.labels : texts.map((t) => `${short} = ${t}`) };
+  const slider = $("row-value");
+  slider.max = texts.length - 1;
+  slider.value = 0;
+  $("row-key").textContent = short;
+  $("row-label").textContent = state.row.labels[0];
+  $("row-controls").hidden = false;
+  assign(scene, key, state.row.values[0]);
+  await loadScene(scene);
+}
+function onRowValue() {
+  const i = Number($("row-value").value);
+  assign(state.scene, state.row.key, state.row.values[i]);
+  state.scene = normalizeScene(state.scene);  // a value may be a whole light or shape
+  $("row-label").textContent = state.row.labels[i];
+  buildLights();
+  refresh();
+  changed();
+}
+async function buildLecture() {
+  const r = await fetch("/api/figures");
+  if (!r.ok) return;
+  const { figures, rows } = await r.json();
+  state.figures = figures;
+  state.rows = rows;
+  for (const f of figures) {
+    const o = new Option(f.file.replace(/\.json$/, ""), f.file);
+    o.title = f.caption;
+    $("figure").add(o);
+  }
+  rows.forEach((row, i) => $("row").add(new Option(row.title || row.name, String(i))));
+  $("lecture").hidden = !figures.length;
 }
 
 // ---- share and keep ----------------------------------------------------------------------
@@ -529,6 +637,11 @@ async function start() {
     if (!file) return;
     try { await loadScene(JSON.parse(await file.text())); } catch (e) { showErrors([{ message: `${file.name}: ${e.message}` }]); }
   });
+  $("figure").addEventListener("change", () => { if ($("figure").value) openFigure($("figure").value).catch((e) => showErrors([{ message: String(e) }])); });
+  $("row").addEventListener("change", () => { if ($("row").value !== "") openRow(Number($("row").value)).catch((e) => showErrors([{ message: String(e) }])); });
+  $("row-value").addEventListener("input", (ev) => { ev.stopPropagation(); onRowValue(); });
+  $("row-strip").addEventListener("change", render);
+  await buildLecture();
   $("undo").addEventListener("click", undo);
   $("redo").addEventListener("click", redo);
   document.addEventListener("keydown", onKey);

@@ -106,6 +106,34 @@ try {
   check(saved.readUInt32BE(16) === 320 && saved.readUInt32BE(20) === 200 && download.suggestedFilename() === "lab-320x200.png",
         `save picture downloads a 320 x 200 PNG (${download.suggestedFilename()}, ${saved.readUInt32BE(16)} x ${saved.readUInt32BE(20)})`);
 
+  // 7. The lecture in one click: a figure from the menu, then a row with its slider and strip.
+  await page.locator("#figure").selectOption("10-spot-cutoff.json");
+  await page.waitForFunction(() => document.querySelectorAll("#lights tbody tr:not(.details)").length === 1);
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  check((await page.locator("#figure-caption").textContent()).startsWith("Figure 10"), "a figure opens with its caption");
+  const rowIndex = await page.locator("#row option", { hasText: "Spot cutoff" }).getAttribute("value");
+  await page.locator("#row").selectOption(rowIndex);
+  await page.waitForFunction(() => !document.getElementById("row-controls").hidden);
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  const cutoffField = 'input[type=number][data-path="lights[0].spot.cutoff"]';
+  check((await page.locator(cutoffField).inputValue()) === "50", "a row opens at its first value (cutoff 50)");
+  const wide = await imageKey();
+  await page.locator("#row-value").evaluate((e) => { e.value = "3"; e.dispatchEvent(new Event("input", { bubbles: true })); });
+  let narrow = wide;
+  for (let waited = 0; narrow === wide && waited < 30000; waited += 100) {
+    await page.waitForTimeout(100);
+    narrow = await imageKey();
+  }
+  check(narrow !== wide && (await page.locator(cutoffField).inputValue()) === "20" &&
+        (await page.locator("#row-label").textContent()) === "cutoff = 20",
+        "dragging the row's slider sets the value (cutoff 20) and changes the picture");
+  await page.locator("#row-strip").check();
+  await page.waitForFunction(() => document.querySelectorAll("#images img").length === 4);
+  const rowCaptions = await page.locator("#images figcaption").allTextContents();
+  check(rowCaptions.join(",") === "cutoff = 50,cutoff = 40,cutoff = 30,cutoff = 20",
+        `the whole row side by side (${rowCaptions.join(", ")})`);
+  await page.locator("#row-strip").uncheck();
+
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });
   console.log(`screenshot: ${shot}`);

@@ -89,6 +89,15 @@ try {
   await page.click("#redo");
   await page.waitForFunction((f) => document.querySelector(f).value === "77", {}, shininessField);
   check(true, "redo applies it again");
+
+  // A lecture figure from the menu.
+  await page.evaluate(() => {
+    const menu = document.getElementById("figure");
+    menu.value = "10-spot-cutoff.json";
+    menu.dispatchEvent(new Event("change", { bubbles: true }));
+  });
+  await page.waitForFunction(() => document.querySelectorAll("#lights tbody tr:not(.details)").length === 1);
+  check((await page.$eval("#figure-caption", (e) => e.textContent)).startsWith("Figure 10"), "a figure opens with its caption");
   check(errors.length === 0, `no script errors${errors.length ? ": " + errors.join("; ") : ""}`);
   const shot = join(out, "lab_firefox.png");
   await page.screenshot({ path: shot });
