@@ -586,6 +586,7 @@ function onInput(ev) {
 }
 async function loadScene(scene) {
   state.scene = normalizeScene(scene);
+  $("explain").hidden = true;  // it explained a pixel of the scene before
   buildStatic();
   buildLights();
   refresh();
@@ -642,6 +643,16 @@ async function start() {
   $("row-value").addEventListener("input", (ev) => { ev.stopPropagation(); onRowValue(); });
   $("row-strip").addEventListener("change", render);
   await buildLecture();
+  // The theme: the system's ("auto") unless one is chosen; kept in this browser.
+  const theme = localStorage.getItem("shadelab-theme") || "auto";
+  $("theme").value = theme;
+  if (theme !== "auto") document.documentElement.dataset.theme = theme;
+  $("theme").addEventListener("change", () => {
+    const t = $("theme").value;
+    if (t === "auto") delete document.documentElement.dataset.theme;
+    else document.documentElement.dataset.theme = t;
+    localStorage.setItem("shadelab-theme", t);
+  });
   $("undo").addEventListener("click", undo);
   $("redo").addEventListener("click", redo);
   document.addEventListener("keydown", onKey);

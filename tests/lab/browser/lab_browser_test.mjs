@@ -134,6 +134,20 @@ try {
         `the whole row side by side (${rowCaptions.join(", ")})`);
   await page.locator("#row-strip").uncheck();
 
+  // 8. The dark theme, chosen in the header, kept for the next visit.
+  const background = () => page.evaluate(() => getComputedStyle(document.body).backgroundColor);
+  const light = await background();
+  await page.locator("#theme").selectOption("dark");
+  const dark = await background();
+  await page.screenshot({ path: join(out, "lab_browser_dark.png") });
+  await page.reload();
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  check(light === "rgb(245, 246, 248)" && dark === "rgb(22, 24, 28)" && (await background()) === dark,
+        `the dark theme darkens the page and stays after a reload (${light} -> ${dark})`);
+  await page.locator("#theme").selectOption("light");
+  await page.locator("#row").selectOption(rowIndex);
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });
   console.log(`screenshot: ${shot}`);
