@@ -90,7 +90,8 @@ bool figure_item(const fs::path& scene, const GalleryArgs& a, std::vector<Item>&
 }
 
 // rows.json: [{"name", "title", "scene", "vary": ["KEY=V1,V2", ...], "set": [...], "caption"}].
-// A row is its contact sheet and an animation of its pictures, one a second.
+// A row is its contact sheet and an animation of its pictures, one a second (a row of one
+// picture, an empty `vary`, has no animation).
 bool row_items(const fs::path& manifest, const GalleryArgs& a, const Font& font, std::vector<Item>& items,
                Diagnostics& diags) {
   nlohmann::json rows = nlohmann::json::parse(read_text(manifest), nullptr, false);
@@ -122,7 +123,8 @@ bool row_items(const fs::path& manifest, const GalleryArgs& a, const Font& font,
       command += " --set '" + s.get<std::string>() + "'";
     }
     const std::string name = row.value("name", "row");
-    const std::string png = name + ".png", animation = name + "-animation.png";
+    const std::string png = name + ".png";
+    const std::string animation = r.vary.empty() ? "" : name + "-animation.png";  // a single picture is not animated
     command += " --samples " + std::to_string(a.samples) + " -o " + png;
     Item item;
     item.entry = {r.title, png, animation, row.value("caption", ""), read_text(r.scene), command};
@@ -131,7 +133,7 @@ bool row_items(const fs::path& manifest, const GalleryArgs& a, const Font& font,
       std::optional<Image> sheet = run_sweep(r, font, d, nullptr, &pictures);
       std::string error;
       if (!sheet || !write_png(*sheet, (dir / png).string(), &error) ||
-          !write_apng(pictures, (dir / animation).string(), 1, 1, &error)) {
+          (!animation.empty() && !write_apng(pictures, (dir / animation).string(), 1, 1, &error))) {
         if (!error.empty()) d.error({}, "", error);
         return false;
       }
