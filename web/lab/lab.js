@@ -57,6 +57,7 @@ function normalizeScene(scene) {
       spot: { ...d.spot, ...(l.spot || {}) }, enabled: l.enabled !== false,
     };
   });
+  s.camera = { eye: [0, 0, 8], target: [0, 0, 0], up: [0, 1, 0], ...(s.camera || {}) };
   s.light_model = { ambient: [0.2, 0.2, 0.2, 1], local_viewer: false, two_side: false, ...(s.light_model || {}) };
   s.light_model.ambient = rgba(s.light_model.ambient, [0.2, 0.2, 0.2, 1]);
   if (!s.objects || !s.objects.length) s.objects = [{ name: "object", shape: "sphere" }];
@@ -265,7 +266,10 @@ async function render() {
       const v = variants[i];
       img.alt = v.label || "render";
       img.dataset.shading = v.shading || state.scene.objects[0].shading;
-      if (!v.scene) img.addEventListener("click", (ev) => explain(ev, img));
+      if (!v.scene) {
+        img.addEventListener("click", (ev) => { if (!dragged) explain(ev, img); });
+        enableOrbit(img);
+      }
       fig.append(img);
       if (v.label) { const c = document.createElement("figcaption"); c.textContent = v.label; fig.append(c); }
       images.append(fig);
@@ -286,6 +290,79 @@ function changed() {
   if (!$("live").checked) return;
   clearTimeout(timer);
   timer = setTimeout(render, 30);
+}
+
+// ---- the camera in the student's hands ------------------------------------------------------
+// Dragging the picture turns the camera around its target (left-right about the up axis,
+// up-down about the screen's horizontal axis, short of the poles); the wheel moves it closer or
+// farther. A press that moves less than 4 pixels stays a click (explain this pixel).
+const vsub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+const vadd = (a, b) => [a[0] + b[0], a[1] + b[1], a[2] + b[2]];
+const vscale = (a, k) => [a[0] * k, a[1] * k, a[2] * k];
+const vdot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+const vcross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+const vlen = (a) => Math.sqrt(vdot(a, a));
+const vnorm = (a) => { const l = vlen(a) || 1; return vscale(a, 1 / l); };
+// v rotated by `angle` about the unit axis k (Rodrigues).
+function rotate(v, k, angle) {
+  const c = Math.cos(angle), s = Math.sin(angle);
+  return vadd(vadd(vscale(v, c), vscale(vcross(k, v), s)), vscale(k, vdot(k, v) * (1 - c)));
+}
+let dragged = false;
+function orbit(camera, startEye, dx, dy) {
+  const up = vnorm(camera.up || [0, 1, 0]);
+  let offset = vsub(startEye, camera.target);
+  offset = rotate(offset, up, -dx * 0.01);
+  const right = vnorm(vcross(up, offset));
+  const turned = rotate(offset, right, dy * 0.01);
+  const cos = vdot(vnorm(turned), up);
+  if (Math.abs(cos) < 0.995) offset = turned;  // not over a pole
+  camera.eye = vadd(camera.target, offset).map((v) => Math.round(v * 1000) / 1000);
+}
+function enableOrbit(img) {
+  img.addEventListener("pointerdown", (ev) => {
+    if (ev.button !== 0) return;
+    const camera = state.scene.camera, startEye = camera.eye.slice(), x0 = ev.clientX, y0 = ev.clientY;
+    dragged = false;
+    const move = (e) => {
+      const dx = e.clientX - x0, dy = e.clientY - y0;
+      if (!dragged && Math.hypot(dx, dy) < 4) return;
+      dragged = true;
+      orbit(camera, startEye, dx, dy);
+      changed();
+    };
+    const up = () => { window.removeEventListener("pointermove", move); window.removeEventListener("pointerup", up); };
+    window.addEventListener("pointermove", move);
+    window.addEventListener("pointerup", up);
+    ev.preventDefault();
+  });
+  img.addEventListener("wheel", (ev) => {
+    ev.preventDefault();
+    const camera = state.scene.camera, offset = vsub(camera.eye, camera.target);
+    const d = Math.min(Math.max(vlen(offset) * Math.exp(ev.deltaY * 0.001), 0.5), 200);
+    camera.eye = vadd(camera.target, vscale(vnorm(offset), d)).map((v) => Math.round(v * 1000) / 1000);
+    changed();
+  }, { passive: false });
+  img.draggable = false;
+}
+// Keys for the common toggles, outside the text fields: R render, L live, C compare,
+// 1 / 2 / 3 flat / Gouraud / Phong, E hide the explanation.
+function onShortcut(ev) {
+  if (ev.ctrlKey || ev.metaKey || ev.altKey) return;
+  const el = document.activeElement;
+  if (el && (el.tagName === "INPUT" || el.tagName === "SELECT" || el.tagName === "TEXTAREA")) return;
+  const k = ev.key.toLowerCase();
+  const toggle = (id) => { $(id).checked = !$(id).checked; $(id).dispatchEvent(new Event("change", { bubbles: true })); };
+  if (k === "r") render();
+  else if (k === "l") toggle("live");
+  else if (k === "c") toggle("compare");
+  else if (k === "e") $("explain").hidden = true;
+  else if (k === "1" || k === "2" || k === "3") {
+    state.scene.objects[0].shading = ["flat", "gouraud", "phong"][Number(k) - 1];
+    refresh();
+    changed();
+  } else return;
+  ev.preventDefault();
 }
 
 // ---- explain this pixel -----------------------------------------------------------------
@@ -656,6 +733,7 @@ async function start() {
   $("undo").addEventListener("click", undo);
   $("redo").addEventListener("click", redo);
   document.addEventListener("keydown", onKey);
+  document.addEventListener("keydown", onShortcut);
   $("copy-link").addEventListener("click", async () => {
     updateAddress();
     try { await navigator.clipboard.writeText(location.href); $("status").textContent = "link copied"; }

@@ -148,6 +148,48 @@ try {
   await page.locator("#row").selectOption(rowIndex);
   await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
 
+  // 9. The camera by hand: a drag turns it around the target, the wheel moves it away; keys.
+  await page.locator("#row-strip").uncheck();
+  await page.waitForFunction(() => document.querySelectorAll("#images img").length === 1);
+  await page.locator("#images img").first().click({ position: { x: 20, y: 20 } });  // explain a pixel...
+  await page.waitForFunction(() => !document.getElementById("explain").hidden);
+  await page.locator("body").click({ position: { x: 5, y: 5 } });
+  await page.keyboard.press("e");  // ...and hide it with E
+  check(await page.locator("#explain").isHidden(), "key E hides the explanation");
+  const eye0 = await page.evaluate(() => state.scene.camera.eye.slice());
+  const picture0 = await imageKey();
+  const box = await page.locator("#images img").first().boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 - 30, { steps: 8 });
+  await page.mouse.up();
+  const eye1 = await page.evaluate(() => state.scene.camera.eye.slice());
+  const dist = (e) => Math.hypot(e[0], e[1], e[2]);  // the figures look at the origin
+  check(Math.abs(eye1[0] - eye0[0]) > 0.5 && Math.abs(dist(eye1) - dist(eye0)) < 0.01,
+        `dragging the picture turns the camera around its target (eye ${eye0.join(",")} -> ${eye1.join(",")})`);
+  let picture1 = picture0;
+  for (let waited = 0; picture1 === picture0 && waited < 30000; waited += 100) {
+    await page.waitForTimeout(100);
+    picture1 = await imageKey();
+  }
+  check(picture1 !== picture0, "and the picture follows");
+  check(await page.locator("#explain").isHidden(), "a drag is not a click (no explanation)");
+  const box2 = await page.locator("#images img").first().boundingBox();
+  await page.mouse.move(box2.x + box2.width / 2, box2.y + box2.height / 2);
+  await page.mouse.wheel(0, 400);
+  await page.waitForTimeout(200);
+  const eye2 = await page.evaluate(() => state.scene.camera.eye.slice());
+  check(dist(eye2) > dist(eye1) + 0.5, `the wheel moves the camera away (distance ${dist(eye1).toFixed(2)} -> ${dist(eye2).toFixed(2)})`);
+  await page.locator("body").click({ position: { x: 5, y: 5 } });
+  await page.keyboard.press("3");
+  check((await page.locator("#shading").inputValue()) === "phong", "key 3 sets Phong shading");
+  await page.keyboard.press("c");
+  await page.waitForFunction(() => document.querySelectorAll("#images img").length === 3);
+  const compared = await page.locator("#compare").isChecked();
+  await page.keyboard.press("c");
+  await page.waitForFunction(() => document.querySelectorAll("#images img").length === 1);
+  check(compared && !(await page.locator("#compare").isChecked()), "key C turns the comparison on and off");
+
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });
   console.log(`screenshot: ${shot}`);
