@@ -159,9 +159,10 @@ try {
   const eye0 = await page.evaluate(() => state.scene.camera.eye.slice());
   const picture0 = await imageKey();
   const box = await page.locator("#images img").first().boundingBox();
-  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  // (from a corner: the light's dot at the centre would be dragged instead)
+  await page.mouse.move(box.x + box.width / 4, box.y + box.height * 0.8);
   await page.mouse.down();
-  await page.mouse.move(box.x + box.width / 2 + 80, box.y + box.height / 2 - 30, { steps: 8 });
+  await page.mouse.move(box.x + box.width / 4 + 80, box.y + box.height * 0.8 - 30, { steps: 8 });
   await page.mouse.up();
   const eye1 = await page.evaluate(() => state.scene.camera.eye.slice());
   const dist = (e) => Math.hypot(e[0], e[1], e[2]);  // the figures look at the origin
@@ -189,6 +190,35 @@ try {
   await page.keyboard.press("c");
   await page.waitForFunction(() => document.querySelectorAll("#images img").length === 1);
   check(compared && !(await page.locator("#compare").isChecked()), "key C turns the comparison on and off");
+
+  // 10. The lights in the picture: figure 10's spot light, 2 units in front of the wall on the
+  // camera's axis, is drawn at the picture's centre; dragging its dot moves it sideways.
+  const before10 = await imageKey();
+  await page.locator("#figure").selectOption("10-spot-cutoff.json");  // the camera as the figure has it
+  for (let waited = 0; (await imageKey()) === before10 && waited < 30000; waited += 100) await page.waitForTimeout(100);
+  await page.waitForFunction(() => document.querySelectorAll("#images svg.markers .handle").length === 1);
+  const shown = await page.evaluate(() => {
+    const img = document.querySelector("#images img"), dot = document.querySelector("#images svg.markers .handle");
+    return { cx: Number(dot.getAttribute("cx")), cy: Number(dot.getAttribute("cy")), w: img.clientWidth, h: img.clientHeight };
+  });
+  check(Math.abs(shown.cx - shown.w / 2) < 1.5 && Math.abs(shown.cy - shown.h / 2) < 1.5,
+        `the spot light is drawn where the camera sees it (${shown.cx}, ${shown.cy} in ${shown.w} x ${shown.h})`);
+  check((await page.locator("#images svg.markers line").count()) === 3, "with its spot axis and cone");
+  const lit0 = await imageKey();
+  const dot = await page.locator("#images svg.markers .handle").boundingBox();
+  await page.mouse.move(dot.x + dot.width / 2, dot.y + dot.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(dot.x + dot.width / 2 + 40, dot.y + dot.height / 2, { steps: 6 });
+  await page.mouse.up();
+  const expected = 40 * (2 * 6 * Math.tan(Math.PI / 12)) / shown.h;  // 6 units from the eye, fovy 30
+  const moved = Number(await page.locator('input[data-path="lights[0].position[0]"]').inputValue());
+  check(Math.abs(moved - expected) < 0.02, `dragging the light 40 px moves it ${moved} (expected ${expected.toFixed(3)}) in its field`);
+  let lit1 = lit0;
+  for (let waited = 0; lit1 === lit0 && waited < 30000; waited += 100) {
+    await page.waitForTimeout(100);
+    lit1 = await imageKey();
+  }
+  check(lit1 !== lit0, "and the picture follows");
 
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });
