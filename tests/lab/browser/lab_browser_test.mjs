@@ -70,17 +70,51 @@ try {
 
   // 5. Show code gives OpenGL calls for the same settings.
   await page.locator("#show-code").click();
-  const code = await page.locator("#code").textContent();
+  const code = await page.locator("#code").inputValue();
   check(code.includes("glLightfv(GL_LIGHT8, GL_DIFFUSE") && code.includes("glMaterialf(GL_FRONT, GL_SHININESS"),
         "show code lists the GL calls");
-
-  // 6. Share and keep: the setup in the address, undo and redo, a picture saved at a size.
-  await page.locator("#code").evaluate((e) => { e.hidden = true; });
   await cutoff.fill("30");  // a valid setup again (step 4 left an error)
   await cutoff.dispatchEvent("change");
   await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  await page.locator("#show-code").click();  // shown again: the code of the setup as it is now
+  await page.locator("#show-code").click();
+
+  // 5b. The code can be edited: light 6's diffuse red in its array, the shininess in its call;
+  // a line the view does not understand is listed with its line number and changes nothing.
+  const edited = (await page.locator("#code").inputValue())
+    .replace(/(\/\* light 6 \*\/\n.*\n\s*GLfloat diffuse\[\] = \{)[^,]*/, "$10.250f")
+    .replace(/glMaterialf\(GL_FRONT, GL_SHININESS, [^)]*\)/, "glMaterialf(GL_FRONT, GL_SHININESS, 64)")
+    .replace("glEnable(GL_LIGHTING);", "glEnable(GL_LIGHTING);\nglFrobnicate(1);");
+  const beforeEdit = await imageKey();
+  await page.locator("#code").fill(edited);
+  await page.waitForFunction(() => document.querySelector('input[data-path="lights[6].diffuse[0]"]').value === "0.25");
+  const shininessNow = await page.locator('input.num[data-path="objects[0].material.shininess"]').inputValue();
+  const codeErrors = await page.locator("#code-errors").textContent();
+  check(shininessNow === "64" && /^line \d+: not understood: "glFrobnicate\(1\);"/.test(codeErrors),
+        `editing the code sets the values (light 6 red 0.25, shininess ${shininessNow}) and lists the bad line (${codeErrors.split("(")[0].trim()})`);
+  let afterEdit = beforeEdit;
+  for (let waited = 0; afterEdit === beforeEdit && waited < 30000; waited += 100) {
+    await page.waitForTimeout(100);
+    afterEdit = await imageKey();
+  }
+  check(afterEdit !== beforeEdit, "and the picture follows");
+  const sceneText = JSON.parse(await page.locator("#scene-text").inputValue());
+  sceneText.objects[0].material.shininess = 12;
+  await page.locator("#scene-text").fill(JSON.stringify(sceneText, null, 2));
+  await page.waitForFunction(() => document.querySelector('input.num[data-path="objects[0].material.shininess"]').value === "12");
+  await page.locator("#scene-text").fill("{ \"lights\": [");
+  await page.waitForFunction(() => document.getElementById("scene-errors").textContent.startsWith("the scene file:"));
+  check((await page.locator('input.num[data-path="objects[0].material.shininess"]').inputValue()) === "12",
+        "the scene file edits the setup too, and a broken one is reported and changes nothing");
+  await page.locator("#show-code").click();
+
+  // 6. Share and keep: the setup in the address, undo and redo, a picture saved at a size.
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
   const shininess = page.locator('input.num[data-path="objects[0].material.shininess"]');
   const shininessBefore = await shininess.inputValue();
+  // The setup so far is a step of its own once the controls have been still for 400 ms (the
+  // address then holds it): wait for that, so that undo returns to it.
+  await page.waitForFunction((v) => sceneFromAddress().objects[0].material.shininess === Number(v), shininessBefore);
   await shininess.fill("77");
   await shininess.dispatchEvent("change");
   await page.waitForFunction(() => { const s = sceneFromAddress(); return s && s.objects[0].material.shininess === 77; });
