@@ -30,7 +30,9 @@ namespace shadelab::python {
 namespace {
 
 // Raised with the reader's diagnostics: a list of (file, line, column, key_path, message).
-py::object scene_error_type;
+// A plain reference, kept for the interpreter's life (a py::object here would be released
+// after the interpreter has finalized).
+PyObject* scene_error_type = PyExc_Exception;
 
 [[noreturn]] void raise_diagnostics(const Diagnostics& diags) {
   py::list items;
@@ -39,7 +41,7 @@ py::object scene_error_type;
   }
   std::string text = diags.to_string();
   if (!text.empty() && text.back() == '\n') text.pop_back();
-  PyErr_SetObject(scene_error_type.ptr(), py::make_tuple(text, items).ptr());
+  PyErr_SetObject(scene_error_type, py::make_tuple(text, items).ptr());
   throw py::error_already_set();
 }
 
@@ -243,8 +245,10 @@ py::bytes png(py::array_t<std::uint8_t, py::array::c_style | py::array::forcecas
 PYBIND11_MODULE(_shadelab, m) {
   using namespace shadelab::python;
   m.doc() = "shadelab's native module; use the shadelab package";
-  scene_error_type = py::reinterpret_borrow<py::object>(PyExc_Exception);  // replaced by the package
-  m.def("_set_error_type", [](py::object type) { scene_error_type = std::move(type); });
+  m.def("_set_error_type", [](py::object type) {  // the package's SceneError
+    Py_INCREF(type.ptr());
+    scene_error_type = type.ptr();
+  });
   py::class_<PyScene>(m, "Scene")
       .def(py::init<std::string, std::string, std::string>(), py::arg("text"), py::arg("filename"),
            py::arg("base_dir"))
