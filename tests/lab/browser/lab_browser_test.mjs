@@ -254,6 +254,21 @@ try {
   }
   check(lit1 !== lit0, "and the picture follows");
 
+  // 11. At a projector's 1280 x 720 nothing overflows: the page, the light table, the
+  // explanation of a pixel.
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await page.locator("#figure").selectOption("18-lighting-controls.json");
+  await page.waitForFunction(() => document.querySelectorAll("#lights tbody tr:not(.details)").length === 9);
+  await page.waitForFunction(() => document.getElementById("status").textContent.startsWith("rendered"));
+  await page.locator("#images img").first().click({ position: { x: 200, y: 190 } });
+  await page.waitForSelector("#explain-result");
+  const overflow = await page.evaluate(() => ["#explain", "#lights", "#controls"].map((q) => {
+    const e = document.querySelector(q);
+    return e.scrollWidth - e.clientWidth;
+  }).concat([document.documentElement.scrollWidth - document.documentElement.clientWidth]));
+  check(overflow.every((d) => d <= 0), `nothing overflows at 1280 x 720 (${overflow.join(", ")} px too wide)`);
+  await page.screenshot({ path: join(out, "lab_browser_1280x720.png") });
+
   const shot = join(out, "lab_browser.png");
   await page.screenshot({ path: shot, fullPage: false });
   console.log(`screenshot: ${shot}`);
