@@ -98,6 +98,51 @@ try {
   });
   await page.waitForFunction(() => document.querySelectorAll("#lights tbody tr:not(.details)").length === 1);
   check((await page.$eval("#figure-caption", (e) => e.textContent)).startsWith("Figure 10"), "a figure opens with its caption");
+
+  // The light in the picture, where the camera sees it (figure 10: at the centre), dragged.
+  await page.waitForFunction(() => {
+    const dot = document.querySelector("#images svg.markers .handle"), img = document.querySelector("#images img");
+    return dot && Math.abs(Number(dot.getAttribute("cx")) - img.clientWidth / 2) < 1.5;
+  }, { timeout: 30000 });
+  const dot = await (await page.$("#images svg.markers .handle")).boundingBox();
+  await page.mouse.move(dot.x + dot.width / 2, dot.y + dot.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(dot.x + dot.width / 2 + 40, dot.y + dot.height / 2, { steps: 6 });
+  await page.mouse.up();
+  const lightX = Number(await page.$eval('input[data-path="lights[0].position[0]"]', (e) => e.value));
+  check(Math.abs(lightX - 0.322) < 0.02, `dragging the light's dot moves the light (x ${lightX})`);
+
+  // The camera by hand: a drag away from the light turns it around the target.
+  await page.waitForFunction(() => {
+    const img = document.querySelector("#images img");
+    return img && img.complete && document.getElementById("status").textContent.startsWith("rendered");
+  });
+  await new Promise((r) => setTimeout(r, 300));
+  const img = await (await page.$("#images img")).boundingBox();
+  await page.mouse.move(img.x + img.width / 4, img.y + img.height * 0.8);
+  await page.mouse.down();
+  await page.mouse.move(img.x + img.width / 4 + 80, img.y + img.height * 0.8 - 30, { steps: 8 });
+  await page.mouse.up();
+  const eye = await page.evaluate(() => state.scene.camera.eye.slice());
+  check(Math.abs(eye[0]) > 0.5 && Math.abs(Math.hypot(...eye) - 8) < 0.01, `dragging the picture turns the camera (eye ${eye.join(",")})`);
+
+  // The code view edits the setup.
+  await page.click("#show-code");
+  await page.evaluate(() => {
+    const code = document.getElementById("code");
+    code.value = code.value.replace(/glMaterialf\(GL_FRONT, GL_SHININESS, [^)]*\)/, "glMaterialf(GL_FRONT, GL_SHININESS, 33)");
+    code.dispatchEvent(new Event("input", { bubbles: true }));
+  });
+  await page.waitForFunction(() => document.querySelector('input.num[data-path="objects[0].material.shininess"]').value === "33",
+                             { timeout: 10000 }).catch(() => {});
+  check((await page.$eval('input.num[data-path="objects[0].material.shininess"]', (e) => e.value)) === "33",
+        "editing the code sets the shininess");
+
+  // The dark theme.
+  await page.evaluate(() => { const t = document.getElementById("theme"); t.value = "dark"; t.dispatchEvent(new Event("change")); });
+  check((await page.evaluate(() => getComputedStyle(document.body).backgroundColor)) === "rgb(22, 24, 28)", "the dark theme darkens the page");
+  await page.screenshot({ path: join(out, "lab_firefox_dark.png") });
+  await page.evaluate(() => { const t = document.getElementById("theme"); t.value = "light"; t.dispatchEvent(new Event("change")); });
   check(errors.length === 0, `no script errors${errors.length ? ": " + errors.join("; ") : ""}`);
   const shot = join(out, "lab_firefox.png");
   await page.screenshot({ path: shot });
