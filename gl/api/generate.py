@@ -255,7 +255,20 @@ def entry_point(t: Tables, c: registry.Command) -> str:
 }}"""
 
 
-def compile_function(c: registry.Command) -> str:
+def compile_function(t: Tables, c: registry.Command) -> str:
+    vector = t.config["display_list"].get("as_vector", {}).get(c.short)
+    if vector:
+        # Compiled as the vector command (Mesa's savers): the last argument becomes the first of
+        # four values of the vector's element type, the others 0; saved and, compiling and
+        # executing, run so.
+        element = next(p for p in t.implemented if p.short == vector).params[-1].ctype
+        element = element.replace("const", "").replace("*", "").strip()
+        head = [p.name for p in c.params[:-1]]
+        args = ", ".join(["ctx"] + head + ["v"])
+        return f"""[[gnu::noinline, gnu::cold]] void compile_{c.short}({c.param_list('ctx')}) noexcept {{
+  const {element} v[4] = {{{element}({c.params[-1].name}), 0, 0, 0}};
+  if (compile_command(ctx, [&] {{ save::{vector}({args}); }})) run::{vector}({args});
+}}"""
     args = f"ctx{', ' if c.params else ''}{c.arg_list()}"
     return f"""[[gnu::noinline, gnu::cold]] void compile_{c.short}({c.param_list('ctx')}) noexcept {{
   if (compile_command(ctx, [&] {{ save::{c.short}({args}); }})) run::{c.short}({args});
@@ -266,7 +279,7 @@ def entry_points_cpp(t: Tables) -> str:
     body = "\n\n".join(entry_point(t, c) for c in t.implemented)
     aliases = "\n".join(f'GLAPI {c.ret} GLAPIENTRY {name}({c.param_list()}) __attribute__((alias("{c.name}")));'
                         for name, c in sorted(t.aliases.items()))
-    compiles = "\n\n".join(compile_function(c) for c in t.implemented if t.compiled_into_lists(c))
+    compiles = "\n\n".join(compile_function(t, c) for c in t.implemented if t.compiled_into_lists(c))
     return f"""// The exported OpenGL entry points: each finds the thread's current context (none: the call
 // does nothing and returns 0); while a display list is compiled, a command GL 1.1 section
 // 5.4 compiles is recorded (save.hpp), and executed too only in GL_COMPILE_AND_EXECUTE; then

@@ -269,6 +269,32 @@ static void parameter_errors(ConfContext* c) {
   GLint igot[4];
   glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, igot);
   conf_values(c, "border colour as integers", (double[]){igot[0], igot[1], igot[2], igot[3]}, 4);
+  /* In a display list the scalar forms are recorded as the vector ones: the border colour
+   * becomes (v, 0, 0, 0) without an error, compiling and executing or replayed, and
+   * glTexParameteri's value goes in as a float. */
+  const GLuint border_list = glGenLists(1);
+  glNewList(border_list, GL_COMPILE_AND_EXECUTE);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 0.25f);
+  glEndList();
+  conf_error(c, "list TexParameterf BORDER_COLOR, compiled and executed");
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, got);
+  conf_values(c, "border colour from a listed scalar", (double[]){got[0], got[1], got[2], got[3]}, 4);
+  glTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+  glCallList(border_list);
+  conf_error(c, "list TexParameterf BORDER_COLOR, replayed");
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, got);
+  conf_values(c, "border colour from a replayed scalar", (double[]){got[0], got[1], got[2], got[3]}, 4);
+  glNewList(border_list, GL_COMPILE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, 1);
+  glTexParameterf(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, 9729.6f);
+  glEndList();
+  glCallList(border_list);
+  conf_error(c, "list TexParameteri BORDER_COLOR 1, TexParameterf MIN_FILTER 9729.6");
+  glGetTexParameterfv(GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, got);
+  conf_values(c, "border colour from a listed integer", (double[]){got[0], got[1], got[2], got[3]}, 4);
+  glGetTexParameteriv(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, igot);
+  conf_value(c, "min filter from a listed 9729.6", igot[0]);
+  glDeleteLists(border_list, 1);
   glTexParameterf(GL_TEXTURE_1D, GL_TEXTURE_PRIORITY, 3.0f);
   glGetTexParameterfv(GL_TEXTURE_1D, GL_TEXTURE_PRIORITY, got);
   conf_value(c, "priority 3 clamped", got[0]);
