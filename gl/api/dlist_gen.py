@@ -53,7 +53,10 @@ class ListTables:
         self.hand = set(cfg.get("hand_savers", []))
         self.default_unpack = set(cfg.get("default_unpack", []))
         self.internal = list(cfg.get("internal_opcodes", []))
-        self.compiled = [c for c in tables.implemented if tables.compiled_into_lists(c)]
+        # Commands compiled as their vector forms (as_vector) have no saver, record or opcode
+        # of their own: the vector command's stand for them.
+        as_vector = set(cfg.get("as_vector", {}))
+        self.compiled = [c for c in tables.implemented if tables.compiled_into_lists(c) and c.short not in as_vector]
         for c in self.compiled:
             check_compiled(c)
             if not recordable(c) and c.short not in self.hand:
