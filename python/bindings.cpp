@@ -8,10 +8,8 @@
 #include <pybind11/stl.h>
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +21,7 @@
 #include "shadelab/render.hpp"
 #include "shadelab/scene_io.hpp"
 #include "sweep.hpp"
+#include "text_file.hpp"
 
 namespace py = pybind11;
 
@@ -94,16 +93,14 @@ class PyScene {
 };
 
 PyScene scene_from_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  std::optional<std::string> text = cli::read_text_file(path);
+  if (!text) {
     Diagnostics d;
     d.error({path, 0, 0}, "", "cannot open the scene file");
     raise_diagnostics(d);
   }
-  std::ostringstream text;
-  text << in.rdbuf();
   std::string dir = std::filesystem::path(path).parent_path().string();
-  return PyScene(text.str(), path, dir.empty() ? "." : dir);
+  return PyScene(std::move(*text), path, dir.empty() ? "." : dir);
 }
 
 // An H x W x 4 uint8 array over the image's own pixels: the capsule owns them.

@@ -11,7 +11,6 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +19,7 @@
 #include "shadelab/scene_io.hpp"
 #include "shard.hpp"
 #include "sweep.hpp"
+#include "text_file.hpp"
 
 namespace shadelab::cli {
 
@@ -51,12 +51,7 @@ std::string html_escape(const std::string& s) {
   return out;
 }
 
-std::string read_text(const fs::path& p) {
-  std::ifstream f(p);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+std::string read_text(const fs::path& p) { return read_text_file(p.string()).value_or(""); }
 
 // One picture of the gallery (a figure, or a row with its animation): its entry in the page
 // and how to render its files into a folder.

@@ -13,8 +13,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <thread>
 
 #include <nlohmann/json.hpp>
@@ -26,6 +24,7 @@
 #include "shadelab/materials.hpp"
 #include "shadelab/render.hpp"
 #include "shadelab/scene_io.hpp"
+#include "text_file.hpp"
 
 namespace shadelab::cli {
 
@@ -299,12 +298,7 @@ class Lab {
     return names;
   }
 
-  static std::string read_file(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
+  static std::string read_file(const fs::path& path) { return read_text_file(path.string()).value_or(""); }
 
   LabOptions options_;
   std::unique_ptr<RenderQueue> queue_;

@@ -1,11 +1,12 @@
 // shadelab serve: the lighting lab in the browser (docs/lab.md).
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <sstream>
+#include <optional>
+#include <utility>
 
 #include "commands.hpp"
 #include "lab_server.hpp"
+#include "text_file.hpp"
 
 namespace shadelab::cli {
 
@@ -36,14 +37,12 @@ int run_serve(const ServeArgs& args) {
                  "is not here; name a scene file\n";
     return kExitBadInput;
   }
-  std::ifstream in(o.scene_path, std::ios::binary);
-  if (!in) {
+  std::optional<std::string> text = read_text_file(o.scene_path);
+  if (!text) {
     std::cerr << o.scene_path << ": cannot open scene file\n";
     return kExitBadInput;
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  o.scene_text = text.str();
+  o.scene_text = std::move(*text);
   return run_lab_server(o);
 }
 

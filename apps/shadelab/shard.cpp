@@ -3,8 +3,8 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+
+#include "text_file.hpp"
 
 namespace shadelab::cli {
 
@@ -49,14 +49,12 @@ bool write_manifest(const std::string& output, const nlohmann::json& manifest, s
 
 std::optional<nlohmann::json> read_manifest(const std::string& output, std::string* error) {
   const fs::path path = fs::path(parts_dir(output)) / "manifest.json";
-  std::ifstream in(path);
-  if (!in) {
+  const std::optional<std::string> text = read_text_file(path.string());
+  if (!text) {
     if (error) *error = "no " + path.string() + ": run the command with --shard I/N first";
     return std::nullopt;
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  nlohmann::json m = nlohmann::json::parse(text.str(), nullptr, false);
+  nlohmann::json m = nlohmann::json::parse(*text, nullptr, false);
   if (!m.is_object() || !m.contains("command") || !m["command"].is_string() || !m.contains("parts") ||
       !m["parts"].is_number_unsigned()) {
     if (error) *error = path.string() + ": not a shadelab batch manifest";
