@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "gl/src/capture.hpp"
 #include "gl/src/draw.hpp"
 #include "gl/src/draw_state.hpp"
 #include "gl/src/primitive.hpp"
@@ -173,6 +174,7 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.secondary_colors = m.secondary;
   in.fog_coords = m.fog;
   in.triangles = triangles;
+  capture_draw(c, shade, in, l.enabled, {});
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
   // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.

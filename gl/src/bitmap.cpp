@@ -9,6 +9,7 @@
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
+#include "gl/src/capture.hpp"
 #include "gl/src/dlist.hpp"
 #include "gl/src/draw_state.hpp"
 #include "gl/src/pixels.hpp"
@@ -60,7 +61,10 @@ void exec::Bitmap(GlContext& c, GLsizei width, GLsizei height, GLfloat xorig, GL
   RasterPosition& r = c.raster_pos;
   if (!r.valid) return;
   if (c.render_mode == GL_FEEDBACK) feedback_raster_position(c, GL_BITMAP_TOKEN);
-  else if (c.render_mode == GL_RENDER && width > 0 && height > 0 && bitmap) draw_bitmap(c, width, height, xorig, yorig, bitmap);
+  else if (c.render_mode == GL_RENDER && width > 0 && height > 0 && bitmap) {
+    capture_pixels(c);
+    draw_bitmap(c, width, height, xorig, yorig, bitmap);
+  }
   r.window.x += xmove;
   r.window.y += ymove;
 }

@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "gl/src/capture.hpp"
+
 namespace shadelab::gl {
 
 GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* share)
@@ -39,11 +41,13 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   const char* reference = std::getenv("SHADELAB_REFERENCE");
   use_reference = reference && *reference && std::string_view(reference) != "0";
   if (const char* stats = std::getenv("SHADELAB_STATS")) stats_path = stats;
+  capture_init(*this);
 }
 
 // With SHADELAB_STATS, one line of counts for the context's life (nothing when the file cannot
 // be opened: the library reports nothing of its own accord).
 GlContext::~GlContext() {
+  capture_context_end(*this);
   if (!pipeline || stats_path.empty()) return;
   pipeline->finish_draws();
   const RenderStats n = pipeline->take_counts();

@@ -291,6 +291,11 @@ class SurfaceHooks {
   ~SurfaceHooks() = default;
 };
 
+struct FrameCapture;  // capture.cpp
+struct FrameCaptureDeleter {
+  void operator()(FrameCapture* f) const;
+};
+
 struct GlContext {
   // Creation parameters
   GLenum buffer_format = GL_RGBA;
@@ -349,6 +354,8 @@ struct GlContext {
   /// SHADELAB_STATS: the file a line of the context's draw and fragment counts is appended to
   /// when it is destroyed (PipelineContext::set_counting); empty: no counting.
   std::string stats_path;
+  /// SHADELAB_CAPTURE_SCENE: the frame kept as a scene file (capture.hpp); null without it.
+  std::unique_ptr<FrameCapture, FrameCaptureDeleter> capture;
   UserBuffer user;
   TileMap tiles;
   bool ever_current = false;  // the first OSMesaMakeCurrent sets the viewport

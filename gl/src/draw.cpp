@@ -4,6 +4,7 @@
 // at the draw), then the primitive's triangles, lines or points with their colours to
 // draw_triangles, in parts for long primitives. Fragment work (clipping, rasterization,
 // texturing, blending) is the core pipeline's.
+#include "gl/src/capture.hpp"
 #include "gl/src/draw.hpp"
 
 #include <algorithm>
@@ -107,6 +108,7 @@ Triangle flat_triangle(const PrimitiveTriangle& t, const Primitive& prim, Batch&
   const std::uint32_t* v = t.v;
   const VertexColors colors = prim.colors.empty() ? VertexColors{} : prim.colors[t.provoking];
   const float fog = prim.fog_coords.empty() ? 0.0f : prim.fog_coords[v[2]];  // never flat
+  if (!batch.s.capture_materials.empty()) batch.s.capture_materials.push_back(prim.capture_materials[t.provoking]);
   return {v[0], v[1], batch.add(prim, v[2], colors, fog)};
 }
 
@@ -221,10 +223,15 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   const bool unfilled = polygons && (c.prims.unfilled() || observe);
   const bool quads = p.mode == GL_QUADS && !unfilled;
   const bool normals = p.deferred_lighting && !p.object_normals, colors = !p.deferred_lighting;
+  // A captured frame keeps the normals and materials of vertices lit here (capture.hpp).
+  const bool capture_lit = p.capture_lit && !p.deferred_lighting && !observe;
+  std::vector<VertexMaterials>& capture_materials = c.immediate_scratch.capture_materials;
+  capture_materials.clear();
+  if (capture_lit) capture_materials.assign(p.capture_materials.begin(), p.capture_materials.begin() + count);
   bool outside = false;
   for (std::uint32_t i = 0; i < count; ++i) {
     const PrimitiveVertex& v = p.vertices[i];
-    batch.set(i, v, normals, colors ? &p.colors[i] : nullptr, p, p.fog_coordinates ? &p.fog_coords[i] : nullptr);
+    batch.set(i, v, normals || capture_lit, colors ? &p.colors[i] : nullptr, p, p.fog_coordinates ? &p.fog_coords[i] : nullptr);
     if (p.object_normals) batch.s.normals[i] = eye_normal(c, v.normal);
     finite[i] = finite_clip(projection, small_projection, v.eye);
     if (quads && !outside) outside = !inside_view_volume(projection, v.eye);
@@ -296,6 +303,11 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
     draw_triangles(c.fb, projection, c.raster.viewport, f, shade, in);
     return;
   }
+  if (c.capture) {
+    VertexInput captured = in;
+    if (capture_lit) captured.normals = batch.s.normals;
+    capture_draw(c, shade, captured, l.enabled, capture_materials);
+  }
   make_pipeline(c);
   draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
                  c.pipeline.get());
@@ -326,6 +338,7 @@ void flush_part(GlContext& c) {
   for (std::vector<glm::vec4>& t : p.texcoords) keep_ends(t, f.keep_first, f.keep_last);
   keep_ends(p.fog_coords, f.keep_first, f.keep_last);
   keep_ends(p.edges, f.keep_first, f.keep_last);
+  keep_ends(p.capture_materials, f.keep_first, f.keep_last);
 }
 
 }  // namespace
@@ -366,6 +379,8 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.object_normals = p.deferred_lighting && c.lighting.shade_model != GL_FLAT;
   // Feedback reports texture coordinates whether or not a texture applies (as Mesa's).
   p.textured = textured_units(c);
+  p.capture_lit = c.lighting.enabled && capture_recording(c);
+  p.capture_materials.clear();
 }
 
 void settle_lighting(GlContext& c) {
@@ -399,6 +414,7 @@ void emit_vertex(GlContext& c, const glm::vec4& object_position) {
   if (p.fog_coordinates) p.fog_coords.push_back(std::fabs(c.current.fog_coord));
   if (c.lighting.enabled) v.normal = p.object_normals ? c.current.normal : eye_normal(c, c.current.normal);
   if (!p.deferred_lighting) light_vertex(c, v, p.colors.emplace_back());
+  if (p.capture_lit) p.capture_materials.push_back({c.lighting.front, c.lighting.back});
   if (p.edge_flags) p.edges.push_back(c.current.edge_flag != 0.0f);
   if (p.vertices.size() >= kFlushVertices) flush_part(c);
 }
@@ -411,6 +427,7 @@ void end_primitive(GlContext& c) {
   p.colors.clear();
   for (std::vector<glm::vec4>& t : p.texcoords) t.clear();
   p.fog_coords.clear();
+  p.capture_materials.clear();
   p.active = false;
 }
 

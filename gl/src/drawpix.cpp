@@ -13,6 +13,7 @@
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/save.hpp"
+#include "gl/src/capture.hpp"
 #include "gl/src/dlist.hpp"
 #include "gl/src/draw_state.hpp"
 #include "gl/src/pixel_transfer.hpp"
@@ -209,6 +210,7 @@ void exec::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format
   PixelImage img;
   img.width = img.w = width, img.height = img.h = height;
   unpack_image(c, pixels, format, type, img);
+  capture_pixels(c);
   draw_image(c, raster_pixel(c.raster_pos.window.x), raster_pixel(c.raster_pos.window.y), img);
 }
 
@@ -235,6 +237,7 @@ void exec::CopyPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei hei
   PixelImage img;
   img.width = width, img.height = height;
   read_source(c, x, y, type, img);
+  capture_pixels(c);
   draw_image(c, raster_pixel(c.raster_pos.window.x), raster_pixel(c.raster_pos.window.y), img);
 }
 

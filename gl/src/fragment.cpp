@@ -12,6 +12,7 @@
 #include <type_traits>
 
 #include "gl/generated/exec.hpp"
+#include "gl/src/capture.hpp"
 #include "gl/src/context.hpp"
 
 namespace shadelab::gl {
@@ -208,7 +209,9 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
   if (mask & ~known) return c.set_error(GL_INVALID_VALUE);
   if (c.render_mode != GL_RENDER) return;  // nothing is drawn in selection or feedback mode (as Mesa)
   int x0, y0, x1, y1;
-  if (scissor_box(c, x0, y0, x1, y1)) {
+  const bool scissored = scissor_box(c, x0, y0, x1, y1);
+  capture_clear(c, mask, scissored);
+  if (scissored) {
     clear_box(c, (mask & GL_COLOR_BUFFER_BIT) && draws_color(c),
               (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
               (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);

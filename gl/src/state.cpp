@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "gl/generated/exec.hpp"
+#include "gl/src/capture.hpp"
 #include "gl/src/context.hpp"
 
 namespace shadelab::gl {
@@ -140,6 +141,7 @@ void finish_drawing(GlContext& c) {
   present(c);
   if (c.depth_exported) export_depth(c);
   if (c.surface) c.surface->flushed(c);
+  else capture_frame_end(c);  // an OSMesa buffer's frame
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "gl/src/capture.hpp"
 #include "gl/src/primitive.hpp"
 #include "shadelab/detail/default_init.hpp"
 #include "shadelab/light.hpp"
@@ -84,6 +85,9 @@ struct Primitive {
   std::array<bool, kMaxTextureUnits> identity_texture_matrix{};
   std::array<glm::mat4, kMaxTextureUnits> texture_matrix{};
   std::vector<Light> lights;  // enabled lights only
+  // A frame being captured (capture.hpp), lit: each vertex's materials, as it arrived.
+  bool capture_lit = false;
+  std::vector<VertexMaterials> capture_materials;
 };
 
 /// Reused buffers of the vertex-array path (array_mesh.cpp's draw_array_mesh): one entry per
@@ -120,6 +124,7 @@ struct ImmediateScratch {
   std::vector<LineSegment> lines;
   std::vector<std::uint32_t> points;
   std::vector<std::uint8_t> finite;  // per vertex: its clip coordinates are finite
+  std::vector<VertexMaterials> capture_materials;  // per vertex of the batch, when captured
 };
 
 }  // namespace shadelab::gl

@@ -78,6 +78,9 @@ struct Camera {
   float ortho_height = 4.0f;   ///< height of the view volume (orthographic)
   float near_plane = 0.1f;
   float far_plane = 100.0f;
+  /// A projection given as a matrix (camera.projection_matrix: a GL program's glFrustum or
+  /// glOrtho that the parameters above cannot express); it replaces them when set.
+  std::optional<glm::mat4> matrix;
 
   glm::mat4 view_matrix() const;
   glm::mat4 projection_matrix(float aspect) const;  ///< aspect = width / height

@@ -145,6 +145,10 @@ struct Builder {
       mesh.positions.push_back({p[0], p[1], p[2]});
       const tinyobj::real_t* t = i.texcoord_index >= 0 ? &a.texcoords[2 * std::size_t(i.texcoord_index)] : nullptr;
       mesh.texcoords.push_back(t ? glm::vec2(t[0], t[1]) : glm::vec2(0.0f));
+      if (!a.colors.empty()) {
+        const tinyobj::real_t* k = &a.colors[3 * std::size_t(i.vertex_index)];
+        mesh.colors.push_back(glm::clamp(glm::vec4(k[0], k[1], k[2], 1.0f), 0.0f, 1.0f));
+      }
       position_of.push_back(i.vertex_index);
     }
     return it->second;
@@ -199,7 +203,9 @@ bool parse(const std::string& text, tinyobj::attrib_t& attrib, std::vector<tinyo
   std::istringstream in(text);
   // No material reader: an OBJ's .mtl is not part of the scene (materials are). No triangulation
   // here: indices are checked before anything uses them, then faces are split below.
-  if (tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, false)) return true;
+  // Vertex colours (`v x y z r g b`, an extension many tools write) are kept only when every
+  // vertex has one.
+  if (tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, nullptr, false, false)) return true;
   while (!err.empty() && (err.back() == '\n' || err.back() == '\r')) err.pop_back();
   report(0, "cannot parse mesh file: " + (err.empty() ? std::string("bad OBJ data") : err));
   return false;
@@ -217,6 +223,7 @@ bool load_obj(const std::string& path, Mesh& out, Diagnostics& diags) {
   check_finite(attrib.vertices, 3, "vertex", lines.v, report);
   check_finite(attrib.normals, 3, "normal", lines.vn, report);
   check_finite(attrib.texcoords, 2, "texture coordinate", lines.vt, report);
+  check_finite(attrib.colors, 3, "vertex colour", lines.v, report);
   check_faces(shapes, attrib, lines, report);
   if (report.count > 0) return report.finish();
   bool file_normals = true;

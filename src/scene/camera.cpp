@@ -9,6 +9,7 @@ namespace shadelab {
 glm::mat4 Camera::view_matrix() const { return glm::lookAt(eye, target, up); }
 
 glm::mat4 Camera::projection_matrix(float aspect) const {
+  if (matrix) return *matrix;
   if (projection == Projection::kOrthographic) {
     float h = 0.5f * ortho_height, w = h * aspect;
     return glm::ortho(-w, w, -h, h, near_plane, far_plane);

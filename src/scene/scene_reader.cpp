@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 namespace shadelab::detail {
 
@@ -74,7 +75,7 @@ void SceneReader::samples(const JsonValue& v, Scene& s) {
 
 void SceneReader::camera(const JsonValue& v, Camera& c) {
   if (!r_.object(v, "camera", {"eye", "target", "up", "projection", "fovy", "ortho_height", "near",
-                               "far"})) {
+                               "far", "projection_matrix"})) {
     return;
   }
   r_.vec3(v, "eye", "camera", c.eye);
@@ -94,6 +95,24 @@ void SceneReader::camera(const JsonValue& v, Camera& c) {
                            format_number(c.near_plane) + ")");
   }
   check_view(v, c);
+  projection_matrix(v, c);
+}
+
+// A column-major 4 x 4 matrix, as glLoadMatrixf takes it; it must be invertible.
+void SceneReader::projection_matrix(const JsonValue& v, Camera& c) {
+  const JsonValue* m = v.find("projection_matrix");
+  if (!m) return;
+  std::vector<double> values;
+  const std::string path = "camera.projection_matrix";
+  if (!r_.numbers(*m, path, values, 16, -1, closed(-kHuge, kHuge))) return;
+  glm::mat4 p;
+  for (int i = 0; i < 16; ++i) p[i / 4][i % 4] = float(values[std::size_t(i)]);
+  const float det = glm::determinant(p);
+  if (!(std::isfinite(det) && det != 0.0f)) {
+    r_.error(*m, path, "the matrix is not invertible (it maps the view volume onto a plane)");
+    return;
+  }
+  c.matrix = p;
 }
 
 // gluLookAt needs a view direction, and an up vector not along it.

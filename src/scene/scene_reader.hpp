@@ -41,6 +41,7 @@ class SceneReader {
   void samples(const JsonValue& v, Scene& s);
   void camera(const JsonValue& v, Camera& c);
   void check_view(const JsonValue& v, const Camera& c);
+  void projection_matrix(const JsonValue& v, Camera& c);
   void light_model(const JsonValue& v, LightModel& m);
   void lights(const JsonValue& v, Scene& s);
   SceneLight light(const JsonValue& v, const std::string& path, int index);

@@ -39,6 +39,21 @@ TEST(ObjLoader, QuadSplitAsOpenGLWithSmoothNormals) {
   for (const glm::vec3& n : m.normals) EXPECT_EQ(n, glm::vec3(0, 0, 1));  // (1,0,0) x (0,1,0)
 }
 
+TEST(ObjLoader, VertexColoursWhenEveryVertexHasOne) {
+  // `v x y z r g b` (a common extension): kept, clamped to 0..1, alpha 1.
+  std::string path = write_obj("v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 2\nf 1 2 3\n");
+  Mesh m;
+  Diagnostics d;
+  ASSERT_TRUE(load_obj(path, m, d)) << d.to_string();
+  ASSERT_EQ(m.colors.size(), 3u);
+  EXPECT_EQ(m.colors[0], glm::vec4(1, 0, 0, 1));
+  EXPECT_EQ(m.colors[2], glm::vec4(0, 0, 1, 1));
+  // A file where some vertex has none: no colours at all (the object's colour applies).
+  path = write_obj("v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "-partial.obj");
+  ASSERT_TRUE(load_obj(path, m, d)) << d.to_string();
+  EXPECT_TRUE(m.colors.empty());
+}
+
 TEST(ObjLoader, FileNormalsAreNormalizedAndSplitVertices) {
   // The two triangles share positions 1 and 3 but not normals: 6 vertices.
   std::string path = write_obj(std::string(kSquare) + "vn 0 0 2\nvn 0 3 4\nf 1//1 2//1 3//1\nf 1//2 3//2 4//2\n");

@@ -33,6 +33,17 @@ expect 1 "" -- "$shadelab" run -- "$glut" --frames 1
 expect 1 "Xvfb" -- env PATH=/nonexistent "$shadelab" run --xvfb -- "$misbehave" status 0
 # A program that ends before its frames are counted: its own status, and a note.
 expect 0 "ended after" -- "$shadelab" run --xvfb --frames 50 -- "$glut" --frames 2
+# --explain needs a pixel; a frame the program never shows is said (status 1).
+expect 2 "--explain" -- "$shadelab" run --explain 12 -- "$misbehave" status 0
+expect 1 "drew nothing in frame 5" -- "$shadelab" run --xvfb --scene-frame 5 --capture-scene "$out/none.json" -- "$glut" --frames 2
+# A single-buffered window's frame is its glFlush.
+rm -f "$out/single.json"
+expect 0 "frame 1 written" -- "$shadelab" run --xvfb --frames 1 --capture-scene "$out/single.json" -- "$glut" --single
+if [ -s "$out/single.json" ] && grep -q '"objects"' "$out/single.json"; then
+  echo "ok: a single-buffered frame is captured"
+else
+  echo "FAIL: no scene for the single-buffered frame"; failures=$((failures + 1))
+fi
 # --size: the window is resized before its first frame.
 rm -f "$out"/size-*.png
 "$shadelab" run --xvfb --frames 2 --size 200x150 --capture "$out/size-%d.png" -- "$glut" >/dev/null 2>&1

@@ -88,6 +88,22 @@ TEST(SceneErrors, MissingRequiredKeysPointAtTheObject) {
             "s.json:1:24: objects[0].shape: missing required key \"file\"\n");
 }
 
+TEST(SceneErrors, ProjectionMatrix) {
+  EXPECT_EQ(errors("{\"camera\": {\"projection_matrix\": [1, 0, 0, 0]}}"),
+            "s.json:1:34: camera.projection_matrix: expected an array of 16 numbers, got 4 numbers\n");
+  EXPECT_EQ(errors("{\"camera\": {\"projection_matrix\": [1,0,0,0, 0,1,0,0, 0,0,0,0, 0,0,0,1]}}"),
+            "s.json:1:34: camera.projection_matrix: the matrix is not invertible (it maps the view volume "
+            "onto a plane)\n");
+  // A valid one replaces fovy and the planes: glFrustum(-1, 2, -1, 1, 1, 10) as written.
+  LoadResult r = parse_scene(
+      "{\"camera\": {\"fovy\": 60, \"projection_matrix\": [1,0,0,0, 0,1,0,0, 0.333333,0,-1.222222,-1, "
+      "0,0,-2.222222,0]}}",
+      "s.json", ".");
+  ASSERT_TRUE(r.scene) << r.diagnostics.to_string();
+  EXPECT_FLOAT_EQ(r.scene->camera.projection_matrix(2.0f)[2][0], 0.333333f);
+  EXPECT_FLOAT_EQ(r.scene->camera.projection_matrix(2.0f)[3][2], -2.222222f);
+}
+
 TEST(SceneErrors, GeometricNonsense) {
   EXPECT_EQ(errors("{\"camera\": {\"eye\": [0, 5, 0]}}"),
             "s.json:1:12: camera: up is parallel to the view direction (from eye to target)\n");

@@ -77,7 +77,12 @@ function toEye(light, v, w) {
 function toScreen(e, w, h) {
   const c = state.scene.camera, aspect = w / h;
   let x, y;
-  if (c.projection === "orthographic") {
+  if (c.projection_matrix) {  // column-major, as a captured GL frame gives it
+    const m = c.projection_matrix, v = [e[0], e[1], e[2], 1];
+    const clip = [0, 1, 3].map((r) => [0, 1, 2, 3].reduce((sum, k) => sum + m[4 * k + r] * v[k], 0));
+    if (!(clip[2] > 1e-6)) return null;
+    x = clip[0] / clip[2]; y = clip[1] / clip[2];
+  } else if (c.projection === "orthographic") {
     const half = (c.ortho_height || 4) / 2;
     x = e[0] / (half * aspect); y = e[1] / half;
   } else {

@@ -435,6 +435,7 @@ async function start() {
   });
   $("save-picture").addEventListener("click", savePicture);
   const linked = sceneFromAddress();
+  $("figure-caption").textContent = (linked || scene).caption || "";
   try {
     await loadScene(linked || scene);
   } catch (e) {  // a link whose scene the controls cannot show

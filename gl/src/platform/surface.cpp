@@ -8,6 +8,7 @@
 
 #include <algorithm>
 
+#include "gl/src/capture.hpp"
 #include "gl/src/platform/run_link.hpp"
 
 namespace shadelab::gl::platform {
@@ -86,7 +87,10 @@ void Surface::unbind(GlContext& c) {
 
 void Surface::swap() {
   GlContext* c = current_context();
-  if (c && c->surface == this) present_context(*c);
+  if (c && c->surface == this) {
+    present_context(*c);
+    capture_frame_end(*c);  // before the runner hears of the frame (it may end the program)
+  }
   show();
   frame_shown();
   follow_size();
@@ -97,8 +101,9 @@ void Surface::follow_size() {
   if (query_size(w, h) && (w != width_ || h != height_)) set_size(w, h);
 }
 
-void Surface::flushed(GlContext& /*c*/) {
+void Surface::flushed(GlContext& c) {
   if (config_.double_buffered) return;  // the back buffer is shown at the swap
+  capture_frame_end(c);
   show();
   frame_shown();
 }

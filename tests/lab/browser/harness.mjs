@@ -31,9 +31,10 @@ export function finish() {
   process.exit(failures ? 1 : 0);
 }
 
-// `shadelab serve --port 0`; resolves to { url, server } once it prints its address.
-export function startServer(cli, source) {
-  const server = spawn(cli, ["serve", "--port", "0"], { cwd: source, stdio: ["ignore", "pipe", "inherit"] });
+// `shadelab serve [SCENE] --port 0`; resolves to { url, server } once it prints its address.
+export function startServer(cli, source, scene) {
+  const args = ["serve", ...(scene ? [scene] : []), "--port", "0"];
+  const server = spawn(cli, args, { cwd: source, stdio: ["ignore", "pipe", "inherit"] });
   return new Promise((resolve, reject) => {
     let text = "";
     server.stdout.on("data", (d) => {
