@@ -4,23 +4,20 @@
 // the scene in the lab (headless Chromium through playwright-core), whose picture is the
 // program's frame and whose click on the teapot explains that pixel. Run by ctest (capture_lab):
 //   node capture_browser_test.mjs --cli SHADELAB --source REPO_DIR --glut GLUT_SCENE --out DIR
-import { execFileSync } from "node:child_process";
-import { existsSync, readFileSync, rmSync } from "node:fs";
+import { existsSync, readFileSync } from "node:fs";
 import { join } from "node:path";
 import { chromium } from "playwright-core";
 
-import { check, checkSum, finish, options, pixelInPage, startServer } from "./harness.mjs";
+import { agreementInPage, captureFrame, check, checkSum, finish, options, pixelInPage, startServer } from "./harness.mjs";
 
 const browserPath = process.env.CHROMIUM || "/usr/bin/chromium";
 const { cli, source, out } = options("capture_browser_test.mjs", browserPath);
 const glut = process.argv[process.argv.indexOf("--glut") + 1];
 const dir = join(out, "capture");
-rmSync(dir, { recursive: true, force: true });
 const scene = join(dir, "frame.json");
 
 // 1. The frame as a scene, and a pixel of the teapot explained on the command line.
-const text = execFileSync(cli, ["run", "--xvfb", "--frames", "2", "--capture", join(dir, "frame%d.png"),
-  "--capture-scene", scene, "--explain", "160,120", "--", glut], { encoding: "utf8" });
+const text = captureFrame(cli, glut, dir, ["--explain", "160,120"]);
 console.log(text);
 check(existsSync(scene) && existsSync(join(dir, "frame-1.obj")), "--capture-scene wrote the scene and its OBJ files");
 check(/frame 2, pixel \(160, 120\): draw 1, gouraud shading, front face/.test(text), "--explain names the teapot's draw");
@@ -56,25 +53,7 @@ try {
   check(size[0] === 320 && size[1] === 240, `the lab renders the frame's size (${size.join(" x ")})`);
   // The lab's picture against the program's frame 2, pixel by pixel.
   const frame = `data:image/png;base64,${readFileSync(join(dir, "frame2.png")).toString("base64")}`;
-  const agree = await page.evaluate(async (src) => {
-    const read = async (s) => {
-      const img = new Image();
-      img.src = s;
-      await img.decode();
-      const c = document.createElement("canvas");
-      c.width = img.naturalWidth, c.height = img.naturalHeight;
-      const g = c.getContext("2d");
-      g.drawImage(img, 0, 0);
-      return g.getImageData(0, 0, c.width, c.height).data;
-    };
-    const a = await read(src), b = await read(document.querySelector("#images img").src);
-    if (a.length !== b.length) return 0;
-    let close = 0;
-    for (let i = 0; i < a.length; i += 4) {
-      close += Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) <= 2;
-    }
-    return close / (a.length / 4);
-  }, frame);
+  const agree = await page.evaluate(agreementInPage, frame);
   check(agree >= 0.99, `the lab's picture is the program's frame (${(agree * 100).toFixed(2)} % of pixels within 2/255)`);
   // Click the teapot (pixel 160, 120 of 320 x 240), in Phong shading so that the sum is the pixel.
   await page.selectOption("#shading", "phong").catch(() => {});

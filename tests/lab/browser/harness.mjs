@@ -1,7 +1,8 @@
 // What both browser tests share: their command line, the checks' tally, the lab's server on a
 // free port, and reading a pixel's colour and the explanation's sum from the page.
-import { spawn } from "node:child_process";
-import { existsSync, mkdirSync } from "node:fs";
+import { execFileSync, spawn } from "node:child_process";
+import { existsSync, mkdirSync, rmSync } from "node:fs";
+import { join } from "node:path";
 
 export function options(script, browserPath) {
   const arg = (name) => {
@@ -71,4 +72,33 @@ export function checkSum(explained, shown) {
   const m = explained && explained.match(/\((\d+), (\d+), (\d+)\)\/255/);
   const close = m && [1, 2, 3].every((k) => Math.abs(Number(m[k]) - shown[k - 1]) <= 2);
   check(!!close, `the explanation's sum (${m ? m.slice(1).join(", ") : "none"}) is the pixel's colour (${shown.join(", ")})`);
+}
+
+// A GLUT program's frame 2 kept as a scene (`shadelab run --capture-scene`) in `dir`, with the
+// frame itself as frameN.png; returns what the command printed (`extra`: more options).
+export function captureFrame(cli, glut, dir, extra = []) {
+  rmSync(dir, { recursive: true, force: true });
+  return execFileSync(cli, ["run", "--xvfb", "--frames", "2", "--capture", join(dir, "frame%d.png"),
+    "--capture-scene", join(dir, "frame.json"), ...extra, "--", glut], { encoding: "utf8" });
+}
+
+// In the page: the share of pixels of the lab's picture within 2/255 of the image `src`.
+export async function agreementInPage(src) {
+  const read = async (s) => {
+    const img = new Image();
+    img.src = s;
+    await img.decode();
+    const c = document.createElement("canvas");
+    c.width = img.naturalWidth, c.height = img.naturalHeight;
+    const g = c.getContext("2d");
+    g.drawImage(img, 0, 0);
+    return g.getImageData(0, 0, c.width, c.height).data;
+  };
+  const a = await read(src), b = await read(document.querySelector("#images img").src);
+  if (a.length !== b.length) return 0;
+  let close = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    close += Math.max(Math.abs(a[i] - b[i]), Math.abs(a[i + 1] - b[i + 1]), Math.abs(a[i + 2] - b[i + 2])) <= 2;
+  }
+  return close / (a.length / 4);
 }
