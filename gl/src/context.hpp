@@ -349,8 +349,13 @@ struct GlContext {
   std::unique_ptr<PipelineContext> pipeline;
   bool use_reference = false;
   /// The texture objects draws waiting in `pipeline` read, kept alive until they are drawn
-  /// (texture_draw_state); it forgets them when no draw waits.
-  std::vector<std::shared_ptr<const TextureObject>> textures_of_waiting_draws;
+  /// (texture_draw_state), each with the number of the last draw that read it
+  /// (PipelineContext::draws_made).
+  struct KeptTexture {
+    std::shared_ptr<const TextureObject> object;
+    std::uint64_t draw = 0;
+  };
+  std::vector<KeptTexture> textures_of_waiting_draws;
   /// SHADELAB_STATS: the file a line of the context's draw and fragment counts is appended to
   /// when it is destroyed (PipelineContext::set_counting); empty: no counting.
   std::string stats_path;

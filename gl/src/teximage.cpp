@@ -6,6 +6,7 @@
 // the sizes as given.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "gl/generated/exec.hpp"
 #include "gl/generated/run.hpp"
@@ -117,6 +118,66 @@ RgbaImage unpack(const GlContext& c, int row_pixels, int rows, int skip_x, int s
   return image;
 }
 
+// The usual upload, an 8-bit RGB(A) or BGR(A) image into a level of 8-bit components with no
+// pixel transfer, copied byte for byte (rows of RGBA into RGBA at memcpy speed) instead of
+// through floats: the texels the general path stores (an unsigned byte reads back exactly;
+// the level keeps red as luminance and intensity, alpha as alpha, as base_components does).
+// Images `skip_z` .., rows `skip_y` .. and pixels `skip_x` .. of the client image (rows of
+// `row_pixels`, images of `rows` rows when `three_d`) go to texels (x0, y0, z0) ...; false,
+// with nothing stored, when the image or the level is another kind.
+struct ByteCopy {
+  int row_pixels = 0, rows = 0, skip_x = 0, skip_y = 0, skip_z = 0;
+  int width = 0, height = 0, depth = 1;
+  int x0 = 0, y0 = 0, z0 = 0;
+  bool three_d = false;
+};
+
+bool store_bytes(const GlContext& c, const ByteCopy& b, GLenum format, GLenum type, const void* pixels,
+                 const TexImage& img, TextureLevel& core) {
+  const StoredFormat& f = img.format;
+  if (type != GL_UNSIGNED_BYTE || !pixels || f.depth) return false;
+  for (int i = 0; i < f.components; ++i) {
+    if (f.bits[i] != 8) return false;
+  }
+  const PixelTransfer& t = c.pixel;
+  if (t.map_color) return false;
+  for (std::size_t i = 0; i < 4; ++i) {
+    if (t.scale[i] != 1.0f || t.bias[i] != 0.0f) return false;
+  }
+  const bool bgr = format == GL_BGRA || format == GL_BGR;
+  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
+  if (n == 0) return false;
+  const int r = bgr ? 2 : 0, bl = bgr ? 0 : 2;
+  const PixelLayout layout = pixel_layout(c.unpack, n, 1, b.row_pixels);
+  const std::size_t stride = b.three_d ? image_stride(c.unpack, format, type, b.row_pixels, b.rows) : 0;
+  const auto* in = static_cast<const unsigned char*>(pixels);
+  const bool copy_rows = f.base == TextureFormat::kRgba && n == 4 && !bgr;
+  for (int z = 0; z < b.depth; ++z) {
+    const unsigned char* image = in + (b.three_d ? std::size_t(c.unpack.skip_images + b.skip_z + z) * stride : 0);
+    for (int y = 0; y < b.height; ++y) {
+      const unsigned char* src = image + layout.offset(b.skip_x, b.skip_y + y);
+      const std::size_t row = std::size_t(b.z0 + z) * std::size_t(core.height) + std::size_t(b.y0 + y);
+      std::uint8_t* dst = &core.rgba[(row * std::size_t(core.width) + std::size_t(b.x0)) * 4];
+      if (copy_rows) {
+        std::memcpy(dst, src, std::size_t(b.width) * 4);
+        continue;
+      }
+      for (int x = 0; x < b.width; ++x, src += n, dst += 4) {
+        const std::uint8_t red = src[r], alpha = n == 4 ? src[3] : 255;
+        switch (f.base) {
+          case TextureFormat::kRgba: dst[0] = red, dst[1] = src[1], dst[2] = src[bl], dst[3] = alpha; break;
+          case TextureFormat::kRgb: dst[0] = red, dst[1] = src[1], dst[2] = src[bl], dst[3] = 255; break;
+          case TextureFormat::kLuminance: dst[0] = dst[1] = dst[2] = red, dst[3] = 255; break;
+          case TextureFormat::kIntensity: dst[0] = dst[1] = dst[2] = dst[3] = red; break;
+          case TextureFormat::kLuminanceAlpha: dst[0] = dst[1] = dst[2] = red, dst[3] = alpha; break;
+          case TextureFormat::kAlpha: dst[0] = dst[1] = dst[2] = 0, dst[3] = alpha; break;
+        }
+      }
+    }
+  }
+  return true;
+}
+
 GLenum plain_target(int dims) { return dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D; }
 int max_levels(int dims) { return dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels; }
 
@@ -153,11 +214,20 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
     store_depths(c, 0, 0, inner_w, inner_h, type, pixels, stored.bits[0], t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
-  RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
-                           inner_d, dims == 3, format, type, pixels);
   texture_changing(c, t);
   define_level(t, level, internal, inner_w, inner_h, inner_d);
-  store_texels(image, 0, 0, 0, t.images[std::size_t(level)], t.texture.levels[std::size_t(level)]);
+  TexImage& img = t.images[std::size_t(level)];
+  TextureLevel& core = t.texture.levels[std::size_t(level)];
+  // No image (pixels null): the level as define_level made it (GL leaves it undefined).
+  ByteCopy copy;
+  copy.row_pixels = width, copy.rows = height, copy.skip_x = border, copy.skip_y = strip_rows ? 1 : 0;
+  copy.skip_z = strip_images ? 1 : 0, copy.width = inner_w, copy.height = inner_h, copy.depth = inner_d;
+  copy.three_d = dims == 3;
+  if (pixels && !store_bytes(c, copy, format, type, pixels, img, core)) {
+    RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
+                             inner_d, dims == 3, format, type, pixels);
+    store_texels(image, 0, 0, 0, img, core);
+  }
   image_changed(c, target, t, level);
 }
 
@@ -184,9 +254,15 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
     store_depths(c, x, y, width, height, type, pixels, img.format.bits[0], t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
-  RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
   texture_changing(c, t);
-  store_texels(image, x, y, z, img, t.texture.levels[std::size_t(level)]);
+  TextureLevel& core = t.texture.levels[std::size_t(level)];
+  ByteCopy copy;
+  copy.row_pixels = width, copy.rows = height, copy.width = width, copy.height = height, copy.depth = depth;
+  copy.x0 = x, copy.y0 = y, copy.z0 = z, copy.three_d = dims == 3;
+  if (!store_bytes(c, copy, format, type, pixels, img, core)) {
+    RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
+    store_texels(image, x, y, z, img, core);
+  }
   image_changed(c, target, t, level);
 }
 

@@ -298,8 +298,8 @@ unsigned textured_units(GlContext& c) {
 }
 
 void texture_draw_state(GlContext& c, ShadeState& shade) {
-  std::vector<std::shared_ptr<const TextureObject>>& kept = c.textures_of_waiting_draws;
-  bool cleared = false;
+  std::vector<GlContext::KeptTexture>& kept = c.textures_of_waiting_draws;
+  bool counted = false;
   for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
     const TextureUnitState& s = c.textures.units[u];
     TextureUnit& unit = shade.textures[u];
@@ -311,17 +311,31 @@ void texture_draw_state(GlContext& c, ShadeState& shade) {
     if (unit.env == TextureEnvMode::kCombine) unit.combine = core_combine(s.combine);
     if (!unit.texture) continue;
     shade.texture_kept = true;
-    if (!cleared && (!c.pipeline || c.pipeline->deferred_draws() == 0)) kept.clear();
-    cleared = true;
-    if (std::find(kept.begin(), kept.end(), object) == kept.end()) kept.push_back(std::move(object));
+    if (!counted) {
+      // The draws waiting are the last ones made: the textured draws before the last `waiting`
+      // ones are drawn, and their textures (deleted or redefined since) need not be kept. A
+      // program that draws with a new texture each time, without glFinish, keeps a few, not all.
+      counted = true;
+      if (!c.pipeline) {
+        kept.clear();
+      } else {
+        const std::uint64_t drawn = c.pipeline->draws_made() - c.pipeline->deferred_draws();
+        std::erase_if(kept, [&](const GlContext::KeptTexture& k) { return k.draw <= drawn; });
+      }
+    }
+    // This draw's number, if it reaches the pipeline (if not, the next draw's: kept longer).
+    const std::uint64_t draw = c.pipeline ? c.pipeline->draws_made() + 1 : 0;
+    auto same = [&](const GlContext::KeptTexture& k) { return k.object == object; };
+    if (auto it = std::find_if(kept.begin(), kept.end(), same); it != kept.end()) it->draw = draw;
+    else kept.push_back({std::move(object), draw});
   }
 }
 
 void texture_changing(GlContext& c, const TextureObject& t) {
   if (!c.pipeline || c.pipeline->deferred_draws() == 0) return;
-  for (const std::shared_ptr<const TextureObject>& o : c.textures_of_waiting_draws) {
-    if (o.get() == &t) return c.pipeline->finish_draws();
-    for (const TextureObject& face : o->faces) {  // a cube map's face
+  for (const GlContext::KeptTexture& k : c.textures_of_waiting_draws) {
+    if (k.object.get() == &t) return c.pipeline->finish_draws();
+    for (const TextureObject& face : k.object->faces) {  // a cube map's face
       if (&face == &t) return c.pipeline->finish_draws();
     }
   }

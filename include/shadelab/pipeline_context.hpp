@@ -81,6 +81,10 @@ class PipelineContext {
   void finish_draws();
   /// How many draws wait for finish_draws.
   std::size_t deferred_draws() const;
+  /// How many draws were made through the context. The waiting ones are always the last
+  /// `deferred_draws()` of them (any other draw first finishes them), so draw number k (from
+  /// 1) is drawn once `draws_made() - deferred_draws()` reaches k: what it reads may then go.
+  std::uint64_t draws_made() const;
   /// Counting (off by default): every draw through the context adds its triangle, fragment
   /// and draw counts (RenderStats; fragments by path, draws deferred or not) to totals that
   /// take_counts returns and resets. Deferred draws count when finish_draws draws them.

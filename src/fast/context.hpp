@@ -21,6 +21,7 @@ struct PipelineContext::Impl {
   std::vector<std::unique_ptr<fast::DrawJob>> jobs;
   std::size_t queued = 0;
   std::size_t queued_vertices = 0;  ///< the deferred draws' vertices, together
+  std::uint64_t made = 0;           ///< draws made (draws_made)
   bool deferred = false;            ///< set_deferred
   std::vector<fast::WorkerScratch> workers;  ///< one per pool thread
   std::vector<int> tiles;                    ///< the last draw's non-empty tiles

@@ -347,6 +347,8 @@ void PipelineContext::set_deferred(bool on) {
 
 std::size_t PipelineContext::deferred_draws() const { return impl_->queued; }
 
+std::uint64_t PipelineContext::draws_made() const { return impl_->made; }
+
 void PipelineContext::set_counting(bool on) { impl_->counting = on; }
 
 RenderStats PipelineContext::take_counts() {
@@ -390,6 +392,7 @@ void detail::draw_triangles_fast(PipelineContext& context, Framebuffer& fb,
                                  const VertexInput& in, RenderStats* stats_out) {
   PipelineContext::Impl& impl = context.impl();
   impl.pool.wait();  // clear_ahead's job ends first
+  ++impl.made;
   if (!fast::in_fixed_point_range(fb, viewport)) {  // the reference draws: any tile may change
     context.apply_pending_clears(fb);
     impl.tiles.resize(std::size_t(fast::tile_count(fb)));
