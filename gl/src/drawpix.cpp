@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include "gl/generated/exec.hpp"
@@ -18,6 +19,8 @@
 #include "gl/src/draw_state.hpp"
 #include "gl/src/pixel_transfer.hpp"
 #include "gl/src/pixels.hpp"
+#include "gl/src/query_state.hpp"
+#include "gl/src/texture.hpp"
 
 namespace shadelab::gl {
 namespace {
@@ -197,6 +200,47 @@ GLenum copy_error(const GlContext& c, GLsizei width, GLsizei height, GLenum type
   return GL_NO_ERROR;
 }
 
+// The usual glDrawPixels: unsigned-byte RGB(A) or BGR(A) pixels with no pixel transfer at zoom
+// 1, whose fragments nothing but the ownership and scissor tests touch (no texture, colour
+// sum, fog, alpha, stencil or depth test, blending, logic op or masked channel, no query
+// counting them): the colour buffer takes their bytes (draw_fragments writes the same: a byte
+// goes to a float and back exactly), row by row in place. False, with nothing drawn, otherwise.
+bool draw_bytes(GlContext& c, int x, int y, int width, int height, GLenum format, GLenum type, const void* pixels) {
+  const RasterState& r = c.raster;
+  if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color() || c.pixel.zoom_x != 1.0f || c.pixel.zoom_y != 1.0f) return false;
+  const bool bgr = format == GL_BGRA || format == GL_BGR;
+  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
+  if (n == 0 || !draws_color(c) || (r.depth_test && c.depth_bits > 0) || (r.stencil_test && c.stencil_bits > 0)) return false;
+  if (r.blend || r.alpha_test || r.color_logic_op || c.fog.enabled || c.fog.color_sum) return false;
+  for (bool m : r.color_mask) {
+    if (!m) return false;
+  }
+  if (textured_units(c) != 0 || query_counts(c) != nullptr) return false;
+  int x0 = 0, y0 = 0, x1 = c.fb.width, y1 = c.fb.height;
+  scissor_box(c, x0, y0, x1, y1);  // unchanged when every pixel passes
+  x0 = std::max<long long>(x0, x), y0 = std::max<long long>(y0, y);
+  x1 = int(std::min<long long>(x1, (long long)x + width)), y1 = int(std::min<long long>(y1, (long long)y + height));
+  capture_pixels(c);
+  if (x0 >= x1 || y0 >= y1) return true;
+  settle_clears(c);
+  const int red = bgr ? 2 : 0, blue = bgr ? 0 : 2;
+  const PixelLayout layout = pixel_layout(c.unpack, n, 1, width);
+  const auto* in = static_cast<const unsigned char*>(pixels);
+  for (int j = y0; j < y1; ++j) {
+    const unsigned char* src = in + layout.offset(x0 - x, j - y);
+    std::uint8_t* dst = &c.fb.color[(std::size_t(j) * std::size_t(c.fb.width) + std::size_t(x0)) * 4];
+    if (n == 4 && !bgr) {
+      std::memcpy(dst, src, std::size_t(x1 - x0) * 4);
+      continue;
+    }
+    for (int i = x0; i < x1; ++i, src += n, dst += 4) {
+      dst[0] = src[red], dst[1] = src[1], dst[2] = src[blue], dst[3] = n == 4 ? src[3] : 255;
+    }
+  }
+  mark_dirty(c, x0, y0, x1, y1);
+  return true;
+}
+
 }  // namespace
 
 void exec::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type,
@@ -207,6 +251,8 @@ void exec::DrawPixels(GlContext& c, GLsizei width, GLsizei height, GLenum format
   if (width == 0 || height == 0) return;
   // Mesa reports a missing image as a failed allocation of the texture it would make of it.
   if (!pixels) return c.set_error(GL_OUT_OF_MEMORY);
+  const int x = raster_pixel(c.raster_pos.window.x), y = raster_pixel(c.raster_pos.window.y);
+  if (draw_bytes(c, x, y, width, height, format, type, pixels)) return;
   PixelImage img;
   img.width = img.w = width, img.height = img.h = height;
   unpack_image(c, pixels, format, type, img);

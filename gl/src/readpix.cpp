@@ -114,6 +114,34 @@ struct ReadRect {
   int x0, y0, x1, y1;  // the image pixels inside the framebuffer
 };
 
+// The usual read, 8-bit RGBA, RGB, BGRA or BGR with no transfer operation: the colour buffer's
+// bytes are the answer (put_exact's GL_UNSIGNED_BYTE), copied row by row (RGBA rows with
+// memcpy) into the client image of `width` pixels a row laid out by the pack parameters.
+// False, with nothing written, for any other read.
+bool read_bytes(const GlContext& c, const ReadRect& r, int width, GLenum format, GLenum type, void* pixels) {
+  if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color()) return false;
+  const bool bgr = format == GL_BGRA || format == GL_BGR;
+  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
+  if (n == 0) return false;
+  if (r.x1 <= r.x0 || r.y1 <= r.y0) return true;  // nothing of the framebuffer in it
+  const int red = bgr ? 2 : 0, blue = bgr ? 0 : 2;
+  const PixelLayout layout = pixel_layout(c.pack, n, 1, width);
+  auto* out = static_cast<unsigned char*>(pixels);
+  for (int j = r.y0; j < r.y1; ++j) {
+    const std::uint8_t* src = &c.fb.color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + r.x0)) * 4];
+    unsigned char* dst = out + layout.offset(r.x0, j);
+    if (n == 4 && !bgr) {
+      std::memcpy(dst, src, std::size_t(r.x1 - r.x0) * 4);
+      continue;
+    }
+    for (int i = r.x0; i < r.x1; ++i, src += 4, dst += n) {
+      dst[0] = src[red], dst[1] = src[1], dst[2] = src[blue];
+      if (n == 4) dst[3] = src[3];
+    }
+  }
+  return true;
+}
+
 // Colour (section 4.3.2): R, G, B, A from the colour buffer, the transfer operations,
 // luminance R + G + B, clamping to [0, 1], conversion to the type.
 void read_color(const GlContext& c, const ReadRect& r, GLenum format, GLenum type, ClientImageWriter& w) {
@@ -222,6 +250,7 @@ void exec::ReadPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei hei
   ReadRect r{x, y, std::max(0, -x), std::max(0, -y),
              int(std::min<long long>(width, (long long)c.fb.width - x)),
              int(std::min<long long>(height, (long long)c.fb.height - y))};
+  if (is_color_format(format) && read_bytes(c, r, width, format, type, pixels)) return;
   ClientImageWriter w(c.pack, pixels, width, format, type);
   if (is_color_format(format)) read_color(c, r, format, type, w);
   else read_depth_stencil(c, r, format, type, w);
