@@ -581,6 +581,37 @@ typedef struct {
   int stencil;  /* needs a stencil buffer */
 } Scene;
 
+/* teapot-readback: the teapot, then the frame read back as RGB bytes each frame, as programs that
+ * save or check their frames do (glReadPixels in the display callback). */
+static unsigned char* readback;
+static void readback_init(void) {
+  teapot_init();
+  readback = malloc((size_t)width * height * 3);
+}
+static void readback_display(void) {
+  teapot_display();
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, readback);
+}
+
+/* image: a full-window RGBA image drawn with glDrawPixels each frame (an image viewer, a video
+ * player, a software renderer showing its output). */
+static GLubyte* image_pixels;
+static void image_init(void) {
+  projection_ortho();
+  image_pixels = malloc((size_t)width * height * 4);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      GLubyte* p = image_pixels + ((size_t)y * width + x) * 4;
+      p[0] = (GLubyte)(x * 255 / width), p[1] = (GLubyte)(y * 255 / height), p[2] = (GLubyte)((x ^ y) & 255), p[3] = 255;
+    }
+}
+static void image_display(void) {
+  glClear(GL_COLOR_BUFFER_BIT);
+  glRasterPos2f(-1.0f, -1.0f);
+  glDrawPixels(width, height, GL_RGBA, GL_UNSIGNED_BYTE, image_pixels);
+}
+
 static const Scene kScenes[] = {
   {"empty", empty_init, empty_display, 0},
   {"triangle", triangle_init, triangle_display, 0},
@@ -608,6 +639,8 @@ static const Scene kScenes[] = {
   {"points", points_init, points_display, 0},
   {"fog", fog_init, fog_display, 0},
   {"alpha-test", alpha_init, alpha_display, 0},
+  {"teapot-readback", readback_init, readback_display, 0},
+  {"image", image_init, image_display, 0},
 };
 enum { kSceneCount = sizeof kScenes / sizeof kScenes[0] };
 
