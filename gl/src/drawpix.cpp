@@ -208,9 +208,8 @@ GLenum copy_error(const GlContext& c, GLsizei width, GLsizei height, GLenum type
 bool draw_bytes(GlContext& c, int x, int y, int width, int height, GLenum format, GLenum type, const void* pixels) {
   const RasterState& r = c.raster;
   if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color() || c.pixel.zoom_x != 1.0f || c.pixel.zoom_y != 1.0f) return false;
-  const bool bgr = format == GL_BGRA || format == GL_BGR;
-  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
-  if (n == 0 || !draws_color(c) || (r.depth_test && c.depth_bits > 0) || (r.stencil_test && c.stencil_bits > 0)) return false;
+  ByteOrder order;
+  if (!byte_order(format, order) || !draws_color(c) || (r.depth_test && c.depth_bits > 0) || (r.stencil_test && c.stencil_bits > 0)) return false;
   if (r.blend || r.alpha_test || r.color_logic_op || c.fog.enabled || c.fog.color_sum) return false;
   for (bool m : r.color_mask) {
     if (!m) return false;
@@ -223,13 +222,13 @@ bool draw_bytes(GlContext& c, int x, int y, int width, int height, GLenum format
   capture_pixels(c);
   if (x0 >= x1 || y0 >= y1) return true;
   settle_clears(c);
-  const int red = bgr ? 2 : 0, blue = bgr ? 0 : 2;
+  const int n = order.components, red = order.red, blue = order.blue;
   const PixelLayout layout = pixel_layout(c.unpack, n, 1, width);
   const auto* in = static_cast<const unsigned char*>(pixels);
   for (int j = y0; j < y1; ++j) {
     const unsigned char* src = in + layout.offset(x0 - x, j - y);
     std::uint8_t* dst = &c.fb.color[(std::size_t(j) * std::size_t(c.fb.width) + std::size_t(x0)) * 4];
-    if (n == 4 && !bgr) {
+    if (order.rgba()) {
       std::memcpy(dst, src, std::size_t(x1 - x0) * 4);
       continue;
     }

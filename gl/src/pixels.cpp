@@ -98,6 +98,14 @@ std::uint32_t load_packed(const unsigned char* p, int bytes, bool swap_bytes) {
   }
 }
 
+bool byte_order(GLenum format, ByteOrder& out) {
+  const bool bgr = format == GL_BGRA || format == GL_BGR;
+  out.components = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
+  out.red = bgr ? 2 : 0;
+  out.blue = bgr ? 0 : 2;
+  return out.components != 0;
+}
+
 PixelLayout pixel_layout(const PixelStore& s, int components, int type_size, int width) {
   std::size_t n = std::size_t(components), size = std::size_t(type_size);
   std::size_t row_pixels = std::size_t(s.row_length > 0 ? s.row_length : width);

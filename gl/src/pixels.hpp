@@ -62,6 +62,16 @@ struct PixelLayout {
 };
 PixelLayout pixel_layout(const PixelStore& store, int components, int type_size, int width);
 
+/// Where red, green and blue (and alpha) lie in a pixel of bytes of GL_RGBA, GL_BGRA, GL_RGB or
+/// GL_BGR: the byte paths of texture uploads, glReadPixels and glDrawPixels.
+struct ByteOrder {
+  int components = 0;  ///< 4 or 3
+  int red = 0, blue = 2;
+  bool rgba() const { return components == 4 && red == 0; }  ///< the colour buffer's own order
+};
+/// False for any other format.
+bool byte_order(GLenum format, ByteOrder& out);
+
 /// Where the bits of a GL_BITMAP image lie (GL 1.1 section 3.6.3, bitmaps): one bit per
 /// pixel, rows of ceil(l / 8) bytes (l the row length, or the width) padded to the alignment,
 /// GL_*_SKIP_PIXELS counted in bits, GL_*_LSB_FIRST choosing the bit order in a byte.

@@ -120,17 +120,16 @@ struct ReadRect {
 // False, with nothing written, for any other read.
 bool read_bytes(const GlContext& c, const ReadRect& r, int width, GLenum format, GLenum type, void* pixels) {
   if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color()) return false;
-  const bool bgr = format == GL_BGRA || format == GL_BGR;
-  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
-  if (n == 0) return false;
+  ByteOrder order;
+  if (!byte_order(format, order)) return false;
   if (r.x1 <= r.x0 || r.y1 <= r.y0) return true;  // nothing of the framebuffer in it
-  const int red = bgr ? 2 : 0, blue = bgr ? 0 : 2;
+  const int n = order.components, red = order.red, blue = order.blue;
   const PixelLayout layout = pixel_layout(c.pack, n, 1, width);
   auto* out = static_cast<unsigned char*>(pixels);
   for (int j = r.y0; j < r.y1; ++j) {
     const std::uint8_t* src = &c.fb.color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + r.x0)) * 4];
     unsigned char* dst = out + layout.offset(r.x0, j);
-    if (n == 4 && !bgr) {
+    if (order.rgba()) {
       std::memcpy(dst, src, std::size_t(r.x1 - r.x0) * 4);
       continue;
     }

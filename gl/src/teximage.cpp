@@ -144,14 +144,13 @@ bool store_bytes(const GlContext& c, const ByteCopy& b, GLenum format, GLenum ty
   for (std::size_t i = 0; i < 4; ++i) {
     if (t.scale[i] != 1.0f || t.bias[i] != 0.0f) return false;
   }
-  const bool bgr = format == GL_BGRA || format == GL_BGR;
-  const int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3 : 0;
-  if (n == 0) return false;
-  const int r = bgr ? 2 : 0, bl = bgr ? 0 : 2;
+  ByteOrder order;
+  if (!byte_order(format, order)) return false;
+  const int n = order.components, r = order.red, bl = order.blue;
   const PixelLayout layout = pixel_layout(c.unpack, n, 1, b.row_pixels);
   const std::size_t stride = b.three_d ? image_stride(c.unpack, format, type, b.row_pixels, b.rows) : 0;
   const auto* in = static_cast<const unsigned char*>(pixels);
-  const bool copy_rows = f.base == TextureFormat::kRgba && n == 4 && !bgr;
+  const bool copy_rows = f.base == TextureFormat::kRgba && order.rgba();
   for (int z = 0; z < b.depth; ++z) {
     const unsigned char* image = in + (b.three_d ? std::size_t(c.unpack.skip_images + b.skip_z + z) * stride : 0);
     for (int y = 0; y < b.height; ++y) {
