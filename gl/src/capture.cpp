@@ -59,7 +59,7 @@ float material_distance(const Material& a, const Material& b) {
 
 // The object triangles of `key` go into: the same key's, a new one, or past kMaxObjects the
 // nearest material's.
-Object& object_for(FrameCapture& f, const ObjectKey& key, std::size_t draw_vertices) {
+Object& object_for(FrameCapture& f, const ObjectKey& key) {
   for (Object& o : f.objects) {
     if (o.key == key) return o;
   }
@@ -79,7 +79,6 @@ Object& object_for(FrameCapture& f, const ObjectKey& key, std::size_t draw_verti
   Object& o = f.objects.emplace_back();
   o.key = key;
   o.first_draw = f.draws;
-  o.remap.assign(draw_vertices, UINT32_MAX);
   return o;
 }
 
@@ -156,7 +155,6 @@ void capture_draw(GlContext& c, const ShadeState& shade, const VertexInput& in, 
   if (lit && vertex_materials.empty()) key.front = shade.front, key.back = shade.back;
   const bool clockwise = c.raster.front_face == GL_CW;  // scene triangles face front counter-clockwise
   const std::size_t n = in.positions.size();
-  for (Object& o : f.objects) o.remap.assign(n, UINT32_MAX);
   Object* current = nullptr;
   for (const Triangle& t : in.triangles) {
     if (f.triangles >= kMaxTriangles) {
@@ -181,9 +179,9 @@ void capture_draw(GlContext& c, const ShadeState& shade, const VertexInput& in, 
         }
       }
     }
-    if (!current || !(current->key == key)) current = &object_for(f, key, n);
+    if (!current || !(current->key == key)) current = &object_for(f, key);
     Object& o = *current;
-    if (o.remap.size() != n) o.remap.assign(n, UINT32_MAX);
+    if (o.remap_draw != f.draws) o.remap.assign(n, UINT32_MAX), o.remap_draw = f.draws;
     Triangle out;
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t v = t[std::size_t(k)];
@@ -211,7 +209,6 @@ void capture_clear(GlContext& c, GLbitfield mask, bool scissored) {
   c.capture->restart();
   c.capture->background = glm::clamp(c.raster.clear_color, 0.0f, 1.0f);
 }
-
 
 void capture_frame_end(GlContext& c) {
   FrameCapture* f = c.capture.get();

@@ -40,8 +40,10 @@ struct Object {
   std::vector<glm::vec3> positions, normals;
   std::vector<glm::vec4> colors;  // unlit objects
   std::vector<Triangle> triangles;
-  // Per vertex of the draw being added: its index here, or UINT32_MAX (reset per draw).
+  // Per vertex of the draw being added: its index here, or UINT32_MAX (reset at the first
+  // triangle of each draw that reaches this object, `remap_draw`).
   std::vector<std::uint32_t> remap;
+  int remap_draw = -1;
 };
 
 // What a scene file cannot hold, counted for the caption.
