@@ -64,8 +64,9 @@ std::string explain_text(const Scene& scene, int x, int y,
   }
   const LightingBreakdown& b = e->breakdown;
   s += "  the lighting equation at this point";
-  s += e->shading == ShadingMode::kPhong ? ":\n" : " (" + std::string(shading_name(e->shading)) +
-                                                       " shading interpolates the vertices' colours):\n";
+  s += e->shading == ShadingMode::kPhong   ? ":\n"
+       : e->shading == ShadingMode::kFlat ? " (flat shading gives the triangle one colour, lit at its last vertex):\n"
+                                          : " (gouraud shading interpolates the vertices' colours):\n";
   s += line("emission", b.emission);
   s += line("global ambient", b.global_ambient);
   for (const LightTerm& t : b.lights) {

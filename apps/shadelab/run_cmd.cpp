@@ -285,7 +285,8 @@ int run_program(const RunOptions& o) {
   child.command = o.command;
   child.environment = program_environment(o, vendor, xvfb.display(), scene.file);
   child.frame_socket = o.frames > 0 || !o.capture.empty() || !o.explain.empty();
-  child.stop_after_frames = o.frames;
+  // --explain without --frames: the program has shown what is explained once its frame ends.
+  child.stop_after_frames = o.frames > 0 ? o.frames : !o.explain.empty() ? o.chosen_frame() : 0;
   child.timeout_seconds = o.timeout;
   run::Frame chosen;  // the explained frame's pixels
   child.on_frame = [&](int n, const run::Frame& f) {
@@ -323,8 +324,8 @@ Action add_run_command(CLI::App& app) {
                   "The frame --capture-scene and --explain take (default: --frames N, else 1)")
       ->check(CLI::Range(1, 1 << 30));
   sub->add_option("--explain", o->explain,
-                  "Print how the lighting equation makes pixel X,Y (from the top left) of that frame; "
-                  "may be given several times");
+                  "Print how the lighting equation makes pixel X,Y (from the top left) of that frame "
+                  "(the program is ended after it unless --frames says otherwise); may be given several times");
   sub->add_option("command", o->command, "-- PROGRAM ARGS...")->required();
   sub->footer(
       "A frame is a glXSwapBuffers, or a glFlush/glFinish of a single-buffered window.\n"
