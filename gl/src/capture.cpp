@@ -92,6 +92,37 @@ Blend blend_of(const GlContext& c, Omitted& omitted) {
   return Blend::kAlpha;
 }
 
+// Texture unit 0's texture as the scene can hold it (a complete 2D colour texture), copied the
+// first time a draw of the frame reads it; -1 when there is none. Draws textured by other units
+// count as approximated.
+int captured_texture(FrameCapture& f, const ShadeState& shade) {
+  for (std::size_t u = 1; u < shade.textures.size(); ++u) {
+    if (shade.textures[u].texture) {
+      ++f.omitted.more_units;
+      break;
+    }
+  }
+  const Texture* t = shade.textures[0].texture;
+  if (!t) return -1;
+  const std::size_t base = std::size_t(std::max(t->base_level, 0));
+  if (t->dimensions != 2 || t->cube_map || t->depth || base >= t->levels.size() || !t->complete()) {
+    ++f.omitted.textured;
+    return -1;
+  }
+  for (std::size_t i = 0; i < f.textures.size(); ++i) {
+    if (f.textures[i].source == t) return int(i);
+  }
+  const TextureLevel& level = t->levels[base];
+  CapturedTexture& k = f.textures.emplace_back();
+  k.source = t;
+  k.width = level.width, k.height = level.height;
+  k.rgba = level.rgba;
+  k.wrap_s = t->wrap_s, k.wrap_t = t->wrap_t;
+  k.min_filter = t->min_filter, k.mag_filter = t->mag_filter;
+  k.border = t->border_color;
+  return int(f.textures.size() - 1);
+}
+
 CullMode cull_of(const GlContext& c) {
   if (!c.raster.cull) return CullMode::kNone;
   return c.raster.cull_mode == GL_FRONT ? CullMode::kFront : CullMode::kBack;
@@ -127,7 +158,6 @@ void capture_draw(GlContext& c, const ShadeState& shade, const VertexInput& in, 
     return;
   }
   if (in.triangles.empty()) return;
-  if (shade.textured()) ++om.textured;
   if (shade.fog.enabled) ++om.fogged;
   if (!c.raster.depth_test) ++om.no_depth_test;
   if (!f.have_view) {
@@ -153,6 +183,9 @@ void capture_draw(GlContext& c, const ShadeState& shade, const VertexInput& in, 
   key.cull = cull_of(c);
   key.blend = blend_of(c, om);
   if (lit && vertex_materials.empty()) key.front = shade.front, key.back = shade.back;
+  key.texture = captured_texture(f, shade);
+  key.env = shade.textures[0].env;
+  const std::span<const glm::vec4> texcoords = in.texcoords[0];
   const bool clockwise = c.raster.front_face == GL_CW;  // scene triangles face front counter-clockwise
   const std::size_t n = in.positions.size();
   Object* current = nullptr;
@@ -191,6 +224,10 @@ void capture_draw(GlContext& c, const ShadeState& shade, const VertexInput& in, 
         o.positions.push_back(glm::vec3(p) / p.w);
         if (lit) o.normals.push_back(in.normals.empty() ? glm::vec3(0, 0, 1) : in.normals[v]);
         else o.colors.push_back(in.colors.empty() ? in.constant_color : in.colors[v]);
+        if (key.texture >= 0) {
+          const glm::vec4 tc = texcoords.empty() ? glm::vec4(0, 0, 0, 1) : texcoords[v];
+          o.texcoords.push_back(tc.w != 0.0f ? glm::vec2(tc) / tc.w : glm::vec2(tc));
+        }
       }
       out[std::size_t(k)] = o.remap[v];
     }

@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include "gl/src/capture_frame.hpp"
+#include "shadelab/image.hpp"
 
 namespace shadelab::gl {
 
@@ -166,7 +167,11 @@ std::string omissions(const FrameCapture& f, std::size_t clamped) {
   for (std::size_t i = 0; i < parts.size(); ++i) s += (i ? ", " : "") + parts[i];
   if (!parts.empty()) s += ".";
   parts.clear();
-  add(o.textured, plural(o.textured, "textured draw is", "textured draws are") + " drawn without its texture");
+  add(o.textured, plural(o.textured, "draw with a 1D, 3D, cube-map, depth or incomplete texture is",
+                         "draws with a 1D, 3D, cube-map, depth or incomplete texture are") + " drawn without it");
+  add(o.more_units, plural(o.more_units, "multitextured draw keeps", "multitextured draws keep") + " its first unit's texture only");
+  add(o.texture_settings, plural(o.texture_settings, "textured object's wrap, filter or environment is",
+                                 "textured objects' wraps, filters or environments are") + " the nearest the scene has");
   add(o.fogged, plural(o.fogged, "fogged draw is", "fogged draws are") + " drawn without fog");
   add(o.no_depth_test, plural(o.no_depth_test, "draw without depth test is", "draws without depth test are") + " depth tested");
   add(o.blend_other, plural(o.blend_other, "draw's blend function is", "draws' blend functions are") + " taken as alpha blending");
@@ -210,15 +215,57 @@ std::string obj_text(const Object& o) {
     const glm::vec3 u = len > 0.0f && std::isfinite(len) ? n / len : glm::vec3(0, 0, 1);
     s += "vn " + num(u.x) + " " + num(u.y) + " " + num(u.z) + "\n";
   }
+  for (const glm::vec2& t : o.texcoords) s += "vt " + num(t.x) + " " + num(t.y) + "\n";
+  const bool textured = !o.texcoords.empty();
   for (const Triangle& t : o.triangles) {
     s += "f";
     for (std::uint32_t v : t) {
       const std::string i = std::to_string(v + 1);
-      s += " " + (o.key.lit ? i + "//" + i : i);
+      s += " " + i + (textured ? "/" + i : o.key.lit ? "/" : "") + (o.key.lit ? "/" + i : "");
     }
     s += "\n";
   }
   return s;
+}
+
+// The scene's texture keys for a captured texture and environment; counts what they change.
+std::string texture_json(const CapturedTexture& t, TextureEnvMode env, const std::string& file, std::size_t& changed) {
+  auto wrap = [](TextureWrap w) {
+    return w == TextureWrap::kClamp || w == TextureWrap::kClampToBorder ? "clamp"
+           : w == TextureWrap::kClampToEdge                            ? "clamp_to_edge"
+                                                                        : "repeat";
+  };
+  const char* filter = t.min_filter == TextureFilter::kNearest                  ? "nearest"
+                       : t.min_filter == TextureFilter::kLinear                 ? "linear"
+                       : t.min_filter == TextureFilter::kNearestMipmapNearest ||
+                               t.min_filter == TextureFilter::kLinearMipmapNearest ? "bilinear_mipmap"
+                                                                                  : "trilinear";
+  const char* mode = env == TextureEnvMode::kReplace ? "replace"
+                     : env == TextureEnvMode::kDecal ? "decal"
+                     : env == TextureEnvMode::kBlend ? "blend"
+                                                     : "modulate";
+  const bool nearest_mag = t.mag_filter == TextureFilter::kNearest;
+  const bool exact = t.wrap_s == t.wrap_t && t.wrap_s != TextureWrap::kMirroredRepeat &&
+                     t.wrap_s != TextureWrap::kClampToBorder && (t.wrap_s != TextureWrap::kClamp || t.border == glm::vec4(0.0f)) &&
+                     nearest_mag == (t.min_filter == TextureFilter::kNearest) &&
+                     (env == TextureEnvMode::kModulate || std::string(mode) != "modulate");
+  if (!exact) ++changed;
+  return "{\"file\": " + json_string(file) + ", \"wrap\": \"" + wrap(t.wrap_s) + "\", \"filter\": \"" + filter +
+         "\", \"env\": \"" + mode + "\"}";
+}
+
+// Texture i as a PNG beside the scene (its first row the texture's top, t = 1).
+bool write_texture_png(const CapturedTexture& t, const std::string& path) {
+  Image image;
+  image.width = t.width, image.height = t.height;
+  image.rgba.resize(t.rgba.size());
+  const std::size_t row = std::size_t(t.width) * 4;
+  for (int y = 0; y < t.height; ++y) {
+    std::copy_n(t.rgba.begin() + std::ptrdiff_t(std::size_t(y) * row), row,
+                image.rgba.begin() + std::ptrdiff_t(std::size_t(t.height - 1 - y) * row));
+  }
+  std::string error;
+  return write_png(image, path, &error);
 }
 
 std::string program_name() {
@@ -252,8 +299,17 @@ void write_scene(FrameCapture& f, bool ended) {
     } else {
       objects += ", \"lighting\": false";
     }
+    if (o.key.texture >= 0) {
+      const std::string png = stem + "-texture-" + std::to_string(o.key.texture + 1) + ".png";
+      objects += ",\n     \"texture\": " +
+                 texture_json(f.textures[std::size_t(o.key.texture)], o.key.env, png, f.omitted.texture_settings);
+    }
     objects += ",\n     \"shading\": \"" + std::string(o.key.flat ? "flat" : "gouraud") + "\", \"cull\": \"" + cull +
                "\", \"blend\": \"" + blend + "\"}";
+  }
+  for (std::size_t i = 0; i < f.textures.size(); ++i) {
+    const std::string png = stem + "-texture-" + std::to_string(i + 1) + ".png";
+    if (!write_texture_png(f.textures[i], (scene_path.parent_path() / png).string())) return;
   }
   // The camera looks at the middle of what was drawn (where the lab's orbit turns).
   float depth = count ? -sum.z / float(count) : 1.0f;

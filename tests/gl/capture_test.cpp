@@ -177,6 +177,61 @@ TEST_F(CaptureTest, ColourMaterialUnlitColoursAndAnAsymmetricFrustum) {
   EXPECT_GE(agreement(s), 0.99);
 }
 
+// Textured draws: unit 0's texture is written as a PNG beside the scene, with the draw's
+// texture coordinates, filter and environment (a lit, modulated quad and an unlit, replaced one).
+TEST_F(CaptureTest, TexturedDrawsKeepTheirTexture) {
+  start();
+  std::vector<GLubyte> checker(16 * 8 * 4);
+  for (int y = 0; y < 8; ++y)
+    for (int x = 0; x < 16; ++x) {
+      GLubyte* p = &checker[std::size_t(y * 16 + x) * 4];
+      const bool on = ((x / 2) + (y / 2)) % 2 == 0;
+      p[0] = on ? 250 : 30, p[1] = GLubyte(x * 16), p[2] = GLubyte(y * 32), p[3] = 255;
+    }
+  GLuint tex;
+  glGenTextures(1, &tex);
+  glBindTexture(GL_TEXTURE_2D, tex);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 16, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, checker.data());
+  glEnable(GL_TEXTURE_2D);
+  glMatrixMode(GL_PROJECTION);
+  glFrustum(-0.5 * kWidth / kHeight, 0.5 * kWidth / kHeight, -0.5, 0.5, 1, 10);
+  glMatrixMode(GL_MODELVIEW);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_LIGHTING);
+  glEnable(GL_LIGHT0);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+  glBegin(GL_QUADS);  // lit, the texture repeated twice across
+  glNormal3f(0, 0, 1);
+  glTexCoord2f(0, 0), glVertex3f(-1.4f, -1, -3);
+  glTexCoord2f(2, 0), glVertex3f(-0.1f, -1, -3);
+  glTexCoord2f(2, 2), glVertex3f(-0.1f, 1, -3);
+  glTexCoord2f(0, 2), glVertex3f(-1.4f, 1, -3);
+  glEnd();
+  glDisable(GL_LIGHTING);
+  glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+  glRectf(0.1f, -0.3f, 0.9f, 0.3f);  // glRect: texture coordinates (0, 0) everywhere
+  glBegin(GL_TRIANGLES);
+  glTexCoord2f(0, 0), glVertex3f(0.1f, 0.4f, -2.5f);
+  glTexCoord2f(1, 0), glVertex3f(1.0f, 0.4f, -2.5f);
+  glTexCoord2f(0.5f, 1), glVertex3f(0.5f, 1.0f, -2.5f);
+  glEnd();
+  glFinish();
+
+  const Scene s = load();
+  ASSERT_EQ(s.objects.size(), 2u);
+  for (const SceneObject& o : s.objects) {
+    ASSERT_TRUE(o.texture) << o.name;
+    EXPECT_EQ(o.texture->levels[0].width, 16);
+    EXPECT_EQ(o.texture->levels[0].height, 8);
+  }
+  EXPECT_EQ(s.objects[0].texture_env, TextureEnvMode::kModulate);
+  EXPECT_EQ(s.objects[1].texture_env, TextureEnvMode::kReplace);
+  EXPECT_TRUE(fs::exists(dir_ / "frame-texture-1.png"));
+  EXPECT_GE(agreement(s), 0.99);
+}
+
 // SHADELAB_CAPTURE_FRAME=2: the second glFinish's frame, from its last full colour clear.
 TEST_F(CaptureTest, TheChosenFrameFromItsLastClear) {
   start(2);
