@@ -1,10 +1,8 @@
 // Writing a captured frame (capture_frame.hpp): each object's triangles as an OBJ file (its
 // vertex colours on the `v` lines when unlit) and the scene file that names them, with the
 // camera at the GL eye, the lights in eye space and a caption of what the scene leaves out.
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
+#include <cerrno>  // program_invocation_short_name
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -185,16 +183,10 @@ std::string omissions(const FrameCapture& f, std::size_t clamped) {
   return s;
 }
 
+// A text file written whole or not at all (the core's write_file_atomically).
 bool write_text(const std::string& path, const std::string& text) {
-  const std::string temporary = path + ".part" + std::to_string(::getpid());
-  std::FILE* out = std::fopen(temporary.c_str(), "wb");
-  if (!out) return false;
-  const bool ok = std::fwrite(text.data(), 1, text.size(), out) == text.size();
-  if (std::fclose(out) != 0 || !ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    return false;
-  }
-  return true;
+  std::string error;
+  return write_file_atomically(std::vector<std::uint8_t>(text.begin(), text.end()), path, &error);
 }
 
 std::string obj_text(const Object& o) {
