@@ -4,7 +4,6 @@
 // at the draw), then the primitive's triangles, lines or points with their colours to
 // draw_triangles, in parts for long primitives. Fragment work (clipping, rasterization,
 // texturing, blending) is the core pipeline's.
-#include "gl/src/capture.hpp"
 #include "gl/src/draw.hpp"
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
+#include "gl/src/capture.hpp"
 #include "gl/src/convert.hpp"
 #include "gl/src/draw_state.hpp"
 #include "gl/src/primitive.hpp"

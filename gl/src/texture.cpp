@@ -312,9 +312,9 @@ void texture_draw_state(GlContext& c, ShadeState& shade) {
     if (!unit.texture) continue;
     shade.texture_kept = true;
     if (!counted) {
-      // The draws waiting are the last ones made: the textured draws before the last `waiting`
-      // ones are drawn, and their textures (deleted or redefined since) need not be kept. A
-      // program that draws with a new texture each time, without glFinish, keeps a few, not all.
+      // The waiting draws are always the last ones made: a texture whose last draw is drawn by
+      // now (deleted or redefined since, perhaps) need not be kept. A program that draws with a
+      // new texture each time, without glFinish, keeps a queue's worth, not all of them.
       counted = true;
       if (!c.pipeline) {
         kept.clear();
