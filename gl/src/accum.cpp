@@ -53,14 +53,14 @@ std::vector<std::int16_t>& accum_buffer(GlContext& c) {
 }
 
 // Runs fn(accum values, colour bytes) over the four channels of every pixel of the region.
-template <class Fn>
-void for_region(GlContext& c, const Fn& fn) {
+template <class Color, class Fn>
+void for_region(GlContext& c, Color& color, const Fn& fn) {
   std::vector<std::int16_t>& a = accum_buffer(c);
   const Region r = region(c);
   for (int y = r.y0; y < r.y1; ++y) {
     for (int x = r.x0; x < r.x1; ++x) {
       const std::size_t i = (std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x)) * 4;
-      fn(&a[i], &c.fb.color[i]);
+      fn(&a[i], &color[i]);
     }
   }
 }
@@ -69,7 +69,7 @@ void for_region(GlContext& c, const Fn& fn) {
 void load_or_accumulate(GlContext& c, float value, bool load) {
   if (c.buffers.read_buffer == GL_NONE) return;
   const float scale = value * 32767.0f;
-  for_region(c, [&](std::int16_t* acc, const std::uint8_t* rgba) {
+  for_region(c, read_color_buffer(c), [&](std::int16_t* acc, const std::uint8_t* rgba) {
     for (int k = 0; k < 4; ++k) {
       const std::int16_t v = to_short(float(rgba[k]) * (1.0f / 255.0f) * scale);
       acc[k] = load ? v : wrap(std::int32_t(acc[k]) + v);
@@ -83,13 +83,15 @@ void accum_return(GlContext& c, float value) {
   if (!draws_color(c)) return;
   const float scale = value / 32767.0f;
   const auto& mask = c.raster.color_mask;
-  for_region(c, [&](std::int16_t* acc, std::uint8_t* rgba) {
-    for (int k = 0; k < 4; ++k) {
-      if (mask[std::size_t(k)]) rgba[k] = to_ubyte(float(acc[k]) * scale);
-    }
+  for_each_draw_buffer(c, [&](bool) {
+    for_region(c, c.fb.color, [&](std::int16_t* acc, std::uint8_t* rgba) {
+      for (int k = 0; k < 4; ++k) {
+        if (mask[std::size_t(k)]) rgba[k] = to_ubyte(float(acc[k]) * scale);
+      }
+    });
+    const Region r = region(c);
+    mark_dirty(c, r.x0, r.y0, r.x1, r.y1);
   });
-  const Region r = region(c);
-  mark_dirty(c, r.x0, r.y0, r.x1, r.y1);
 }
 
 }  // namespace
@@ -99,7 +101,7 @@ void clear_accum(GlContext& c) {
   std::int16_t v[4];
   // Mesa's FLOAT_TO_SHORT: ((int)(65535 c) - 1) / 2.
   for (int k = 0; k < 4; ++k) v[k] = std::int16_t((int(65535.0f * c.buffers.accum_clear[k]) - 1) / 2);
-  for_region(c, [&](std::int16_t* acc, const std::uint8_t*) { std::copy(v, v + 4, acc); });
+  for_region(c, c.fb.color, [&](std::int16_t* acc, const std::uint8_t*) { std::copy(v, v + 4, acc); });
 }
 
 void exec::ClearAccum(GlContext& c, GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha) {
@@ -124,13 +126,13 @@ void exec::Accum(GlContext& c, GLenum op, GLfloat value) {
     case GL_ADD: {
       if (value == 0.0f) return;
       const std::int16_t incr = to_short(value * 32767.0f);
-      return for_region(c, [&](std::int16_t* acc, const std::uint8_t*) {
+      return for_region(c, c.fb.color, [&](std::int16_t* acc, const std::uint8_t*) {
         for (int k = 0; k < 4; ++k) acc[k] = wrap(std::int32_t(acc[k]) + incr);
       });
     }
     default:  // GL_MULT
       if (value == 1.0f) return;
-      return for_region(c, [&](std::int16_t* acc, const std::uint8_t*) {
+      return for_region(c, c.fb.color, [&](std::int16_t* acc, const std::uint8_t*) {
         for (int k = 0; k < 4; ++k) acc[k] = to_short(float(acc[k]) * value);
       });
   }

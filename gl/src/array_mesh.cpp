@@ -175,12 +175,14 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.fog_coords = m.fog;
   in.triangles = triangles;
   capture_draw(c, shade, in, l.enabled, {});
-  draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in, query_counts(c),
-                 c.pipeline.get());
-  // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
-  const Viewport& vp = c.raster.viewport;
-  if (c.pipeline) mark_drawn(c);
-  else mark_dirty(c, vp.x, vp.y, vp.x + vp.width, vp.y + vp.height);
+  for_each_draw_buffer(c, [&](bool first) {
+    draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in,
+                   first ? query_counts(c) : nullptr, c.pipeline.get());
+    // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
+    const Viewport& vp = c.raster.viewport;
+    if (c.pipeline) mark_drawn(c);
+    else mark_dirty(c, vp.x, vp.y, vp.x + vp.width, vp.y + vp.height);
+  });
   return true;
 }
 

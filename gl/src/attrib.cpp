@@ -200,6 +200,7 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.index_logic_op = s.index_logic_op;
   d.logic_op = s.logic_op;
   c.buffers.draw_buffer = r.draw_buffer;
+  select_draw_buffer(c);
 }
 
 // GL_FOG_BIT (table 6.9's fog rows): the enable, mode, density, start, end, index and colour.

@@ -48,9 +48,7 @@ void draw_bitmap(GlContext& c, GLsizei width, GLsizei height, GLfloat xorig, GLf
   rect.mask = mask;
   rect.texcoords = r.texcoords;  // s / q and t / q are taken per fragment by the core
   rect.fog_coord = r.distance;  // section 3.7: the raster position's (Mesa takes 0)
-  make_pipeline(c);
-  draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, query_counts(c), c.pipeline.get());
-  mark_dirty(c, rect.x, rect.y, rect.x + rect.width, rect.y + rect.height);
+  draw_rectangle(c, rect);
 }
 
 }  // namespace

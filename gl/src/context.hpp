@@ -278,9 +278,9 @@ inline constexpr int kMaxAttribStackDepth = 16;
 inline constexpr int kMaxClientAttribStackDepth = 16;
 
 /// The window-system drawable a context draws into (gl/src/platform: GLX windows, pixmaps and
-/// pbuffers), told of what the GL does that concerns it: a flush (glFlush / glFinish, after
-/// the changed pixels were presented into its image: a single-buffered window shows them
-/// then) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
+/// pbuffers), told of what the GL does that concerns it: a flush (glFlush / glFinish: the
+/// drawable presents into its image what it shows, a single-buffered window its buffer, a
+/// double-buffered one what was drawn into its front buffer) and glViewport (where llvmpipe checks a window's size, since GLUT programs set the
 /// viewport when resized). OSMesa buffers have none.
 class SurfaceHooks {
  public:
@@ -368,6 +368,12 @@ struct GlContext {
   bool depth_exported = false;
   SurfaceHooks* surface = nullptr;  // the drawable it draws into, when a platform bound one
   bool double_buffered = false;     // GL_DRAW_BUFFER / GL_READ_BUFFER are GL_BACK
+  /// A double-buffered drawable's two colour buffers (buffers.cpp): `fb.color` holds the one
+  /// the draw buffer names (the back one unless the program draws into the front only), and
+  /// `other_color` the other while the program uses its front buffer (empty otherwise: the
+  /// front buffer is then the surface's image, what was last shown).
+  ColorBuffer other_color;
+  bool front_in_fb = false;
 
   /// A context with OpenGL's initial state; it shares texture objects and display lists
   /// with `share` when there is one (OSMesa's sharelist, GLX's share context).
@@ -415,6 +421,9 @@ void set_initial_window_state(GlContext& c, int width, int height);
 void make_pipeline(GlContext& c);
 /// Copies the tiles changed since the last copy into the caller's buffer (present.cpp).
 void present(GlContext& c);
+/// The caller's buffer (a surface's image) read into `into` in the framebuffer's layout, as
+/// many pixels as the framebuffer has (formats without alpha read as opaque).
+void read_user_buffer(const GlContext& c, ColorBuffer& into);
 /// Rasterizes the deferred draws and applies the clears left to the draws
 /// (PipelineContext::PendingClears) now: before anything but a draw through the pipeline reads
 /// or writes the framebuffer.
@@ -463,6 +472,44 @@ void for_listed_tiles(GlContext& c, const Fn& fn) {
 void configure_buffers(GlContext& c, bool double_buffered, int accum_bits);
 /// Whether drawing writes colour (GL_DRAW_BUFFER is not GL_NONE).
 bool draws_color(const GlContext& c);
+/// Puts the colour buffer GL_DRAW_BUFFER names into fb.color (the back one when it names both)
+/// and, when it names the front buffer, the other one into other_color: after glDrawBuffer,
+/// glPopAttrib, a swap and a binding to a drawable (buffers.cpp).
+void select_draw_buffer(GlContext& c);
+/// The colour buffer GL_READ_BUFFER names, its pending draws and clears applied.
+const ColorBuffer& read_color_buffer(GlContext& c);
+/// Whether GL_DRAW_BUFFER names both the front and the back buffer of a double-buffered
+/// drawable (GL_FRONT_AND_BACK, GL_LEFT).
+bool draws_both_buffers(const GlContext& c);
+/// Exchanges fb.color and other_color, the pending draws and clears applied first (a front
+/// buffer exchanged out of fb.color is presented, so that the surface's image shows it).
+void exchange_color_buffers(GlContext& c);
+/// Binding to a drawable: the back buffer in fb.color, the old drawable's front let go.
+void leave_drawable(GlContext& c);
+/// A swap made the back buffer the front one (the surface's image): the copy of the old
+/// front is dropped and the draw buffer selected again.
+void swapped_color_buffers(GlContext& c);
+/// The depth and stencil values before a drawing that goes into both colour buffers: the
+/// second pass starts from them, so that both buffers get the fragments the first one got.
+struct DepthStencilCopy {
+  std::vector<float> depth;
+  std::vector<std::uint8_t> stencil;
+};
+DepthStencilCopy save_depth_stencil(GlContext& c);
+void restore_depth_stencil(GlContext& c, DepthStencilCopy& saved);
+/// Runs draw(first) once for each colour buffer GL_DRAW_BUFFER names: once (true) into
+/// fb.color; with both buffers named, a second time (false: occlusion queries and the frame
+/// capture have counted it already) into the front buffer, from the same depth and stencil.
+template <class Draw>
+void for_each_draw_buffer(GlContext& c, const Draw& draw) {
+  if (!draws_both_buffers(c)) return draw(true);
+  DepthStencilCopy saved = save_depth_stencil(c);
+  draw(true);
+  exchange_color_buffers(c);
+  restore_depth_stencil(c, saved);
+  draw(false);
+  exchange_color_buffers(c);
+}
 /// glClear's GL_ACCUM_BUFFER_BIT: the accumulation buffer (if any) to glClearAccum's value,
 /// inside the scissor box when the scissor test is on (accum.cpp).
 void clear_accum(GlContext& c);

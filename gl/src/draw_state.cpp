@@ -164,4 +164,13 @@ ShadeState rectangle_shade_state(GlContext& c) {
   return shade;
 }
 
+void draw_rectangle(GlContext& c, const FragmentRect& rect) {
+  make_pipeline(c);
+  for_each_draw_buffer(c, [&](bool first) {
+    draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, first ? query_counts(c) : nullptr,
+                   c.pipeline.get());
+    mark_dirty(c, rect.x, rect.y, rect.x + rect.width, rect.y + rect.height);
+  });
+}
+
 }  // namespace shadelab::gl

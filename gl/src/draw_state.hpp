@@ -1,7 +1,7 @@
 // The core pipeline's per-draw state made from a context's GL state (draw_state.cpp): the
 // FragmentState of every draw (and of the fragments glDrawPixels, glCopyPixels and glBitmap
-// make), its FogState, and the ShadeState of those rectangles of fragments. Translation only:
-// it changes no GL state and draws nothing.
+// make), its FogState, and the ShadeState of those rectangles of fragments. Translation (it
+// changes no GL state), and the one call that draws those rectangles.
 #pragma once
 
 #include "gl/src/context.hpp"
@@ -26,5 +26,8 @@ FragmentState rectangle_fragment_state(const GlContext& c);
 /// How those fragments are coloured: the active texture and its environment (and every
 /// per-fragment colour operation a primitive's fragments get after texturing); no lighting.
 ShadeState rectangle_shade_state(GlContext& c);
+/// Draws a rectangle of fragments with those states into each colour buffer GL_DRAW_BUFFER
+/// names, and marks its tiles changed.
+void draw_rectangle(GlContext& c, const FragmentRect& rect);
 
 }  // namespace shadelab::gl

@@ -120,9 +120,7 @@ void draw_fragments_of(GlContext& c, const PixelImage& img, const ZoomedSpan& xs
   rect.mask = mask;
   rect.texcoords = r.texcoords;  // s / q and t / q are taken per fragment by the core
   rect.fog_coord = r.distance;  // section 3.6.4: the raster position's (Mesa takes 0)
-  make_pipeline(c);
-  draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, query_counts(c), c.pipeline.get());
-  mark_dirty(c, rect.x, rect.y, rect.x + rect.width, rect.y + rect.height);
+  draw_rectangle(c, rect);
 }
 
 // A depth value as llvmpipe writes a fragment's own depth into its 24-bit (or 16-bit) buffer:
@@ -164,7 +162,7 @@ void unpack_image(const GlContext& c, const void* pixels, GLenum format, GLenum 
 // The framebuffer's pixels of a copy (section 4.3.3: as glReadPixels reads them, through the
 // transfer operations); pixels outside the framebuffer make no fragments (GL leaves them
 // undefined).
-void read_source(const GlContext& c, int sx, int sy, GLenum type, PixelImage& img) {
+void read_source(const GlContext& c, const ColorBuffer& color, int sx, int sy, GLenum type, PixelImage& img) {
   img.x0 = int(std::clamp<long long>(-(long long)sx, 0, img.width));
   img.y0 = int(std::clamp<long long>(-(long long)sy, 0, img.height));
   img.w = int(std::clamp<long long>((long long)c.fb.width - sx, img.x0, img.width)) - img.x0;
@@ -182,7 +180,7 @@ void read_source(const GlContext& c, int sx, int sy, GLenum type, PixelImage& im
       } else if (type == GL_STENCIL) {
         img.stencil[i] = transfer_stencil(c.pixel, c.fb.stencil[p]);
       } else {
-        const std::uint8_t* px = &c.fb.color[p * 4];
+        const std::uint8_t* px = &color[p * 4];
         const glm::vec4 v = transfer_color(c.pixel, glm::vec4(px[0], px[1], px[2], px[3]) * (1.0f / 255.0f));
         img.colors[i] = glm::clamp(v, glm::vec4(0.0f), glm::vec4(1.0f));
       }
@@ -209,7 +207,7 @@ bool draw_bytes(GlContext& c, int x, int y, int width, int height, GLenum format
   const RasterState& r = c.raster;
   if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color() || c.pixel.zoom_x != 1.0f || c.pixel.zoom_y != 1.0f) return false;
   ByteOrder order;
-  if (!byte_order(format, order) || !draws_color(c) || (r.depth_test && c.depth_bits > 0) || (r.stencil_test && c.stencil_bits > 0)) return false;
+  if (!byte_order(format, order) || !draws_color(c) || draws_both_buffers(c) || (r.depth_test && c.depth_bits > 0) || (r.stencil_test && c.stencil_bits > 0)) return false;
   if (r.blend || r.alpha_test || r.color_logic_op || c.fog.enabled || c.fog.color_sum) return false;
   for (bool m : r.color_mask) {
     if (!m) return false;
@@ -281,7 +279,7 @@ void exec::CopyPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei hei
   settle_clears(c);
   PixelImage img;
   img.width = width, img.height = height;
-  read_source(c, x, y, type, img);
+  read_source(c, type == GL_COLOR ? read_color_buffer(c) : c.fb.color, x, y, type, img);
   capture_pixels(c);
   draw_image(c, raster_pixel(c.raster_pos.window.x), raster_pixel(c.raster_pos.window.y), img);
 }

@@ -211,6 +211,12 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
   int x0, y0, x1, y1;
   const bool scissored = scissor_box(c, x0, y0, x1, y1);
   capture_clear(c, mask, scissored);
+  if ((mask & GL_COLOR_BUFFER_BIT) && draws_both_buffers(c)) {  // the front buffer's colour first
+    exchange_color_buffers(c);
+    if (scissored) clear_box(c, true, false, false, x0, y0, x1, y1);
+    else clear_color(c);
+    exchange_color_buffers(c);
+  }
   if (scissored) {
     clear_box(c, (mask & GL_COLOR_BUFFER_BIT) && draws_color(c),
               (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,

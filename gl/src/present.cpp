@@ -168,11 +168,18 @@ void import_user_buffer(GlContext& c) {
     return;
   }
   c.fb.color.detach();
+  read_user_buffer(c, c.fb.color);
+}
+
+void read_user_buffer(const GlContext& c, ColorBuffer& into) {
+  const UserBuffer& u = c.user;
+  const std::size_t width = std::size_t(c.fb.width);
+  if (into.size() != width * std::size_t(c.fb.height) * 4) into.assign(width * std::size_t(c.fb.height) * 4, 0);
   Swizzle s = swizzle_of(u.format);
   for (int y = 0; y < c.fb.height; ++y) {
     const unsigned char* src = user_row(u, y, s.bytes);
-    std::uint8_t* dst = &c.fb.color[std::size_t(y) * std::size_t(c.fb.width) * 4];
-    for (int x = 0; x < c.fb.width; ++x, src += s.bytes, dst += 4) {
+    std::uint8_t* dst = &into[std::size_t(y) * width * 4];
+    for (std::size_t x = 0; x < width; ++x, src += s.bytes, dst += 4) {
       dst[0] = src[s.r], dst[1] = src[s.g], dst[2] = src[s.b];
       dst[3] = s.a >= 0 ? src[s.a] : 255;
     }

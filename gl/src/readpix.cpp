@@ -118,7 +118,8 @@ struct ReadRect {
 // bytes are the answer (put_exact's GL_UNSIGNED_BYTE), copied row by row (RGBA rows with
 // memcpy) into the client image of `width` pixels a row laid out by the pack parameters.
 // False, with nothing written, for any other read.
-bool read_bytes(const GlContext& c, const ReadRect& r, int width, GLenum format, GLenum type, void* pixels) {
+bool read_bytes(const GlContext& c, const ColorBuffer& color, const ReadRect& r, int width, GLenum format, GLenum type,
+                void* pixels) {
   if (type != GL_UNSIGNED_BYTE || c.pixel.changes_color()) return false;
   ByteOrder order;
   if (!byte_order(format, order)) return false;
@@ -127,7 +128,7 @@ bool read_bytes(const GlContext& c, const ReadRect& r, int width, GLenum format,
   const PixelLayout layout = pixel_layout(c.pack, n, 1, width);
   auto* out = static_cast<unsigned char*>(pixels);
   for (int j = r.y0; j < r.y1; ++j) {
-    const std::uint8_t* src = &c.fb.color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + r.x0)) * 4];
+    const std::uint8_t* src = &color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + r.x0)) * 4];
     unsigned char* dst = out + layout.offset(r.x0, j);
     if (order.rgba()) {
       std::memcpy(dst, src, std::size_t(r.x1 - r.x0) * 4);
@@ -143,7 +144,8 @@ bool read_bytes(const GlContext& c, const ReadRect& r, int width, GLenum format,
 
 // Colour (section 4.3.2): R, G, B, A from the colour buffer, the transfer operations,
 // luminance R + G + B, clamping to [0, 1], conversion to the type.
-void read_color(const GlContext& c, const ReadRect& r, GLenum format, GLenum type, ClientImageWriter& w) {
+void read_color(const GlContext& c, const ColorBuffer& color, const ReadRect& r, GLenum format, GLenum type,
+                ClientImageWriter& w) {
   int slots[4];
   const int n = color_slots(format, slots);
   const bool luminance = format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA;
@@ -152,7 +154,7 @@ void read_color(const GlContext& c, const ReadRect& r, GLenum format, GLenum typ
   const PackedType* packed = packed_type(type);  // never with luminance (format_type_error)
   for (int j = r.y0; j < r.y1; ++j) {
     for (int i = r.x0; i < r.x1; ++i) {
-      const std::uint8_t* px = &c.fb.color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + i)) * 4];
+      const std::uint8_t* px = &color[(std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + i)) * 4];
       if (packed) {
         std::uint32_t bytes8[4];
         const glm::vec4 v = transfer ? transfer_color(c.pixel, unit_color(px)) : glm::vec4(0.0f);
@@ -249,10 +251,14 @@ void exec::ReadPixels(GlContext& c, GLint x, GLint y, GLsizei width, GLsizei hei
   ReadRect r{x, y, std::max(0, -x), std::max(0, -y),
              int(std::min<long long>(width, (long long)c.fb.width - x)),
              int(std::min<long long>(height, (long long)c.fb.height - y))};
-  if (is_color_format(format) && read_bytes(c, r, width, format, type, pixels)) return;
+  if (!is_color_format(format)) {
+    ClientImageWriter w(c.pack, pixels, width, format, type);
+    return read_depth_stencil(c, r, format, type, w);
+  }
+  const ColorBuffer& color = read_color_buffer(c);
+  if (read_bytes(c, color, r, width, format, type, pixels)) return;
   ClientImageWriter w(c.pack, pixels, width, format, type);
-  if (is_color_format(format)) read_color(c, r, format, type, w);
-  else read_depth_stencil(c, r, format, type, w);
+  read_color(c, color, r, format, type, w);
 }
 
 }  // namespace shadelab::gl

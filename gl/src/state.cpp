@@ -138,10 +138,10 @@ void pixel_store(GlContext& c, GLenum pname, double value) {
 }
 
 void finish_drawing(GlContext& c) {
+  if (c.surface) return c.surface->flushed(c);  // presents what the drawable shows
   present(c);
   if (c.depth_exported) export_depth(c);
-  if (c.surface) c.surface->flushed(c);
-  else capture_frame_end(c);  // an OSMesa buffer's frame
+  capture_frame_end(c);  // an OSMesa buffer's frame
 }
 
 }  // namespace

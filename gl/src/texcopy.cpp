@@ -15,7 +15,7 @@ namespace {
 // The framebuffer's rectangle [x, x + width) x [y, y + height) (window coordinates, y up)
 // as RGBA; pixels outside the framebuffer are not read and `inside` says which are.
 RgbaImage read_framebuffer(GlContext& c, int x, int y, int width, int height, std::vector<std::uint8_t>& inside) {
-  settle_clears(c);
+  const ColorBuffer& color = read_color_buffer(c);
   RgbaImage image;
   image.width = width, image.height = height;
   image.exact_bytes = image.from_framebuffer = true;
@@ -26,7 +26,7 @@ RgbaImage read_framebuffer(GlContext& c, int x, int y, int width, int height, st
     for (int i = 0; i < width; ++i) {
       const long fx = long(x) + i;
       if (fx < 0 || fy < 0 || fx >= c.fb.width || fy >= c.fb.height) continue;
-      const std::uint8_t* px = &c.fb.color[(std::size_t(fy) * std::size_t(c.fb.width) + std::size_t(fx)) * 4];
+      const std::uint8_t* px = &color[(std::size_t(fy) * std::size_t(c.fb.width) + std::size_t(fx)) * 4];
       float* out = &image.rgba[(std::size_t(j) * std::size_t(width) + std::size_t(i)) * 4];
       for (int k = 0; k < 4; ++k) out[k] = px[k] / 255.0f;
       inside[std::size_t(j) * std::size_t(width) + std::size_t(i)] = 1;

@@ -110,6 +110,92 @@ static void windows_and_swaps(void) {
   XFree(v);
 }
 
+static void rect_at(float x0, float x1, float z, float r, float g, float b) {
+  glColor3f(r, g, b);
+  glBegin(GL_QUADS);
+  glVertex3f(x0, -1, z), glVertex3f(x1, -1, z), glVertex3f(x1, 1, z), glVertex3f(x0, 1, z);
+  glEnd();
+}
+
+static unsigned long read_from(GLenum buffer, int x, int y) {
+  glReadBuffer(buffer);
+  return gl_pixel(x, y);
+}
+
+/* The front and the back buffer of a double-buffered window are two buffers: the window shows
+   the front one, glDrawBuffer and glReadBuffer name either, GL_FRONT_AND_BACK draws into both
+   (each blended with its own pixels, both depth-tested against the same depth), and a swap
+   copies the back one to the front. */
+static void front_and_back(void) {
+  GLXFBConfig c = choose(True);
+  if (!c) return;
+  XVisualInfo* v = glXGetVisualFromFBConfig(dpy, c);
+  Window win = make_window(v, 64, 48);
+  GLXContext ctx = glXCreateNewContext(dpy, c, GLX_RGBA_TYPE, NULL, True);
+  glXMakeContextCurrent(dpy, win, win, ctx);
+  clear_to(1, 0, 0);
+  glXSwapBuffers(dpy, win);
+  clear_to(0, 0, 1);
+  glFinish();
+  check(x_pixel(win, 32, 24) == 0xff0000, "front.finish_shows_no_back", "glFinish showed the back buffer");
+  check(read_from(GL_FRONT, 32, 24) == 0xff0000 && read_from(GL_BACK, 32, 24) == 0x0000ff,
+        "front.read", "glReadBuffer(GL_FRONT / GL_BACK) does not read the buffer it names");
+  glDrawBuffer(GL_FRONT);
+  rect_at(-1, 0, 0, 0, 1, 0);
+  glFlush();
+  check(x_pixel(win, 10, 24) == 0x00ff00 && x_pixel(win, 50, 24) == 0xff0000, "front.draw_flush",
+        "drawing into the front buffer is not shown at glFlush");
+  check(read_from(GL_BACK, 10, 24) == 0x0000ff && read_from(GL_FRONT, 10, 24) == 0x00ff00, "front.back_untouched",
+        "drawing into the front buffer changed the back one");
+  glPushAttrib(GL_COLOR_BUFFER_BIT);
+  glDrawBuffer(GL_BACK);
+  glPopAttrib();
+  GLint draw = 0;
+  glGetIntegerv(GL_DRAW_BUFFER, &draw);
+  rect_at(0, 1, 0, 1, 1, 1);
+  check(draw == GL_FRONT && read_from(GL_FRONT, 50, 24) == 0xffffff && read_from(GL_BACK, 50, 24) == 0x0000ff,
+        "front.pop_attrib", "glPopAttrib did not bring the front buffer back");
+  /* Both buffers: the near quad is drawn first, the far one fails the depth test in both. */
+  glDrawBuffer(GL_FRONT_AND_BACK);
+  glEnable(GL_DEPTH_TEST);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  glBegin(GL_QUADS);
+  glColor3f(1, 1, 0);
+  glVertex3f(-0.5f, -1, -0.5f), glVertex3f(0.5f, -1, -0.5f), glVertex3f(0.5f, 1, -0.5f), glVertex3f(-0.5f, 1, -0.5f);
+  glColor3f(1, 0, 1);
+  glVertex3f(-1, -1, 0.5f), glVertex3f(1, -1, 0.5f), glVertex3f(1, 1, 0.5f), glVertex3f(-1, 1, 0.5f);
+  glEnd();
+  glDisable(GL_DEPTH_TEST);
+  check(read_from(GL_FRONT, 32, 24) == 0xffff00 && read_from(GL_BACK, 32, 24) == 0xffff00 &&
+            read_from(GL_FRONT, 4, 24) == 0xff00ff && read_from(GL_BACK, 60, 24) == 0xff00ff,
+        "front_and_back.depth", "GL_FRONT_AND_BACK did not draw the same fragments into both buffers");
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  clear_to(0, 0, 0); /* both buffers */
+  rect_at(-1, 1, 0, 0, 0.5f, 0);
+  glDrawBuffer(GL_BACK);
+  rect_at(-1, 1, 0, 0.5f, 0, 0);
+  glDisable(GL_BLEND);
+  check(read_from(GL_FRONT, 32, 24) == 0x008000 && read_from(GL_BACK, 32, 24) == 0x808000,
+        "front_and_back.blend", "GL_FRONT_AND_BACK's clear or blending is not each buffer's own");
+  glXSwapBuffers(dpy, win);
+  check(x_pixel(win, 32, 24) == 0x808000 && read_from(GL_FRONT, 32, 24) == 0x808000 &&
+            read_from(GL_BACK, 32, 24) == 0x808000,
+        "front.swap_copies_back", "after the swap the front buffer is not the back one");
+  glDrawBuffer(GL_FRONT);
+  clear_to(0, 1, 1);
+  glXSwapBuffers(dpy, win); /* shows the back buffer; the draw buffer stays the front one */
+  check(x_pixel(win, 32, 24) == 0x808000, "front.swap_shows_back", "the swap showed the front buffer's drawing");
+  clear_to(1, 1, 1);
+  glFinish();
+  check(x_pixel(win, 32, 24) == 0xffffff && read_from(GL_BACK, 32, 24) == 0x808000, "front.after_swap",
+        "drawing into the front buffer after a swap is not shown, or reached the back buffer");
+  glXMakeContextCurrent(dpy, None, None, NULL);
+  glXDestroyContext(dpy, ctx);
+  XDestroyWindow(dpy, win);
+  XFree(v);
+}
+
 static void single_buffered(void) {
   int attributes[] = {GLX_RGBA, GLX_RED_SIZE, 1, GLX_GREEN_SIZE, 1, GLX_BLUE_SIZE, 1, None};
   XVisualInfo* v = glXChooseVisual(dpy, DefaultScreen(dpy), attributes);
@@ -354,6 +440,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   windows_and_swaps();
+  front_and_back();
   single_buffered();
   sharing();
   destroy_current();

@@ -56,10 +56,14 @@ void Surface::point_at_image(GlContext& c) const {
   c.user.row_length = row_pixels_;
   c.user.y_up = false;
   c.user.format = osmesa_format(layout_);
-  if (c.fb.width != width_ || c.fb.height != height_) c.fb.resize(width_, height_);
+  if (c.fb.width != width_ || c.fb.height != height_) {
+    leave_drawable(c);  // a front buffer of the old size: read again from the image
+    c.fb.resize(width_, height_);
+  }
   c.fb.color.detach();
   reset_tiles(c);
   mark_all_changed(c);
+  if (c.surface == this) select_draw_buffer(c);
 }
 
 void Surface::bind(GlContext& c) {
@@ -68,10 +72,12 @@ void Surface::bind(GlContext& c) {
     if (!query_size(w, h)) w = h = 1;
     set_size(w, h);
   }
+  leave_drawable(c);
   point_at_image(c);
   c.surface = this;
   c.double_buffered = config_.double_buffered;
   bound_.push_back(&c);
+  select_draw_buffer(c);
   // GLX 1.4 section 3.3.7 (EGL 1.5 section 3.7.3): the first binding sets the viewport and
   // the scissor box to the drawable's size.
   if (!c.ever_current) set_initial_window_state(c, width_, height_);
@@ -88,12 +94,14 @@ void Surface::unbind(GlContext& c) {
 void Surface::swap() {
   GlContext* c = current_context();
   if (c && c->surface == this) {
+    if (c->front_in_fb) exchange_color_buffers(*c);  // the back buffer is shown
     present_context(*c);
     capture_frame_end(*c);  // before the runner hears of the frame (it may end the program)
   }
   show();
   frame_shown();
   follow_size();
+  if (c && c->surface == this) swapped_color_buffers(*c);
 }
 
 void Surface::follow_size() {
@@ -102,7 +110,13 @@ void Surface::follow_size() {
 }
 
 void Surface::flushed(GlContext& c) {
-  if (config_.double_buffered) return;  // the back buffer is shown at the swap
+  if (config_.double_buffered) {
+    // The back buffer is shown at the swap; what was drawn into the front one, now.
+    if (c.front_in_fb) present_context(c);
+    if (c.front_in_fb || !c.other_color.empty()) show();
+    return;
+  }
+  present_context(c);
   capture_frame_end(c);
   show();
   frame_shown();
