@@ -106,6 +106,9 @@ class Input {
         // GL 1.4 depth textures and their comparison.
         GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32, GL_TEXTURE_DEPTH_SIZE,
         GL_DEPTH_TEXTURE_MODE, GL_TEXTURE_COMPARE_MODE, GL_TEXTURE_COMPARE_FUNC, GL_COMPARE_R_TO_TEXTURE,
+        // EXT_packed_depth_stencil (GL 1.5's header does not name them): GL_DEPTH_STENCIL_EXT,
+        // GL_UNSIGNED_INT_24_8_EXT, GL_DEPTH24_STENCIL8_EXT, GL_TEXTURE_STENCIL_SIZE_EXT.
+        0x84F9u, 0x84FAu, 0x88F0u, 0x88F1u,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }

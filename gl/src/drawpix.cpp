@@ -69,21 +69,29 @@ ZoomedSpan zoomed_span(int start, int n, float zoom, int limit) {
 
 // A stencil image written through the write mask and the scissor box: the pixel ownership
 // and scissor tests and nothing else apply (section 4.3.1; llvmpipe draws it with the
-// scissor on and every other test off).
+// scissor on and every other test off). A GL_DEPTH_STENCIL image (depths too) writes its
+// depths the same way, through the depth write mask, and no colour (as llvmpipe draws it:
+// depth test always passing, colour writes off).
 void write_stencil(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
   settle_clears(c);
   const std::uint8_t mask = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
+  const bool depths = !img.depths.empty() && c.raster.depth_mask;
   int x0 = 0, y0 = 0, x1 = c.fb.width, y1 = c.fb.height;
   scissor_box(c, x0, y0, x1, y1);  // unchanged when every pixel passes
-  for (int y = std::max(ys.first, y0); y < std::min(ys.end, y1); ++y) {
+  x0 = std::max(xs.first, x0), x1 = std::min(xs.end, x1);
+  y0 = std::max(ys.first, y0), y1 = std::min(ys.end, y1);
+  for (int y = y0; y < y1; ++y) {
     const int sy = ys.source(y);
-    for (int x = std::max(xs.first, x0); x < std::min(xs.end, x1); ++x) {
+    for (int x = x0; x < x1; ++x) {
       const long long i = img.at(xs.source(x), sy);
       if (i < 0) continue;
-      std::uint8_t& s = c.fb.stencil[std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x)];
+      const std::size_t p = std::size_t(y) * std::size_t(c.fb.width) + std::size_t(x);
+      std::uint8_t& s = c.fb.stencil[p];
       s = std::uint8_t((s & ~mask) | (img.stencil[std::size_t(i)] & mask));
+      if (depths) c.fb.depth[p] = img.depths[std::size_t(i)];
     }
   }
+  if (depths) mark_dirty(c, x0, y0, x1, y1);  // no longer known to hold the cleared depth
 }
 
 // The zoomed image's fragments with their colours (or the raster colour and their depths)
@@ -147,14 +155,16 @@ int raster_pixel(float v) { return v == v ? int(std::lround(std::clamp(v, -1e9f,
 GLenum draw_error(const GlContext& c, GLsizei width, GLsizei height, GLenum format, GLenum type) {
   if (width < 0 || height < 0) return GL_INVALID_VALUE;
   if (const GLenum e = format_type_error(format, type); e != GL_NO_ERROR) return e;
-  if ((format == GL_STENCIL_INDEX && c.stencil_bits == 0) || (format == GL_DEPTH_COMPONENT && c.depth_bits == 0)) {
+  if (((format == GL_STENCIL_INDEX || format == kDepthStencil) && c.stencil_bits == 0) ||
+      ((format == GL_DEPTH_COMPONENT || format == kDepthStencil) && c.depth_bits == 0)) {
     return GL_INVALID_OPERATION;
   }
   return GL_NO_ERROR;
 }
 
 void unpack_image(const GlContext& c, const void* pixels, GLenum format, GLenum type, PixelImage& img) {
-  if (format == GL_STENCIL_INDEX) unpack_stencil_image(c, pixels, img.width, img.height, type, img.stencil);
+  if (format == kDepthStencil) unpack_depth_stencil_image(c, pixels, img.width, img.height, img.depths, img.stencil);
+  else if (format == GL_STENCIL_INDEX) unpack_stencil_image(c, pixels, img.width, img.height, type, img.stencil);
   else if (format == GL_DEPTH_COMPONENT) unpack_depth_image(c, pixels, img.width, img.height, type, img.depths);
   else unpack_color_image(c, pixels, img.width, img.height, format, type, img.colors);
 }
@@ -169,17 +179,15 @@ void read_source(const GlContext& c, const ColorBuffer& color, int sx, int sy, G
   img.h = int(std::clamp<long long>((long long)c.fb.height - sy, img.y0, img.height)) - img.y0;
   const std::size_t n = std::size_t(img.w) * std::size_t(img.h);
   if (type == GL_COLOR) img.colors.resize(n);
-  else if (type == GL_DEPTH) img.depths.resize(n);
-  else img.stencil.resize(n);
+  if (type == GL_DEPTH || type == kDepthStencil) img.depths.resize(n);
+  if (type == GL_STENCIL || type == kDepthStencil) img.stencil.resize(n);
   for (int y = 0; y < img.h; ++y) {
     for (int x = 0; x < img.w; ++x) {
       const std::size_t i = std::size_t(y) * std::size_t(img.w) + std::size_t(x);
       const std::size_t p = std::size_t(sy + img.y0 + y) * std::size_t(c.fb.width) + std::size_t(sx + img.x0 + x);
-      if (type == GL_DEPTH) {
-        img.depths[i] = transfer_depth(c.pixel, c.fb.depth[p]);
-      } else if (type == GL_STENCIL) {
-        img.stencil[i] = transfer_stencil(c.pixel, c.fb.stencil[p]);
-      } else {
+      if (type == GL_DEPTH || type == kDepthStencil) img.depths[i] = transfer_depth(c.pixel, c.fb.depth[p]);
+      if (type == GL_STENCIL || type == kDepthStencil) img.stencil[i] = transfer_stencil(c.pixel, c.fb.stencil[p]);
+      if (type == GL_COLOR) {
         const std::uint8_t* px = &color[p * 4];
         const glm::vec4 v = transfer_color(c.pixel, glm::vec4(px[0], px[1], px[2], px[3]) * (1.0f / 255.0f));
         img.colors[i] = glm::clamp(v, glm::vec4(0.0f), glm::vec4(1.0f));
@@ -190,9 +198,10 @@ void read_source(const GlContext& c, const ColorBuffer& color, int sx, int sy, G
 
 GLenum copy_error(const GlContext& c, GLsizei width, GLsizei height, GLenum type) {
   if (width < 0 || height < 0) return GL_INVALID_VALUE;
-  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL) return GL_INVALID_ENUM;
-  if ((type == GL_COLOR && c.buffers.read_buffer == GL_NONE) || (type == GL_DEPTH && c.depth_bits == 0) ||
-      (type == GL_STENCIL && c.stencil_bits == 0)) {
+  if (type != GL_COLOR && type != GL_DEPTH && type != GL_STENCIL && type != kDepthStencil) return GL_INVALID_ENUM;
+  if ((type == GL_COLOR && c.buffers.read_buffer == GL_NONE) ||
+      ((type == GL_DEPTH || type == kDepthStencil) && c.depth_bits == 0) ||
+      ((type == GL_STENCIL || type == kDepthStencil) && c.stencil_bits == 0)) {
     return GL_INVALID_OPERATION;
   }
   return GL_NO_ERROR;

@@ -193,6 +193,22 @@ void unpack_depth_image(const GlContext& c, const void* pixels, int width, int h
   }
 }
 
+void unpack_depth_stencil_image(const GlContext& c, const void* pixels, int width, int height,
+                                std::vector<float>& depths, std::vector<std::uint8_t>& stencil) {
+  const ClientImage img(c.unpack, pixels, width, kDepthStencil, kUnsignedInt24_8);
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  depths.resize(n);
+  stencil.resize(n);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const auto v = std::uint32_t(img.index(x, y));
+      const std::size_t i = std::size_t(y) * std::size_t(width) + std::size_t(x);
+      depths[i] = transfer_depth(c.pixel, float(double(v >> 8) / 16777215.0));
+      stencil[i] = transfer_stencil(c.pixel, v & 0xffu);
+    }
+  }
+}
+
 void unpack_stencil_image(const GlContext& c, const void* pixels, int width, int height, GLenum type,
                           std::vector<std::uint8_t>& out) {
   const ClientImage img(c.unpack, pixels, width, GL_STENCIL_INDEX, type);

@@ -45,6 +45,11 @@ void unpack_color_image(const GlContext& c, const void* pixels, int width, int h
 /// GL_DEPTH_COMPONENT images: converted (table 2.6), transfer_depth.
 void unpack_depth_image(const GlContext& c, const void* pixels, int width, int height, GLenum type,
                         std::vector<float>& out);
+/// GL_DEPTH_STENCIL images of GL_UNSIGNED_INT_24_8 pixels (EXT_packed_depth_stencil): the high
+/// 24 bits as a depth through transfer_depth, the low 8 as a stencil index through
+/// transfer_stencil.
+void unpack_depth_stencil_image(const GlContext& c, const void* pixels, int width, int height,
+                                std::vector<float>& depths, std::vector<std::uint8_t>& stencil);
 /// GL_STENCIL_INDEX images: transfer_stencil of each index.
 void unpack_stencil_image(const GlContext& c, const void* pixels, int width, int height, GLenum type,
                           std::vector<std::uint8_t>& out);

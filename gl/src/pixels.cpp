@@ -25,7 +25,7 @@ int pixel_type_size(GLenum type) {
   switch (type) {
     case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
     case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case kUnsignedInt24_8: return 4;
     default: {
       const PackedType* p = packed_type(type);
       return p ? p->bytes : 0;
@@ -231,13 +231,16 @@ void unpack_rgba(const unsigned char* p, GLenum format, GLenum type, float rgba[
 }
 
 int format_components(GLenum format) {
-  if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT) return 1;
+  if (format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT || format == kDepthStencil) {
+    return 1;
+  }
   return color_format_components(format);
 }
 
 int elements_per_pixel(GLenum format, GLenum type) { return packed_type(type) ? 1 : format_components(format); }
 
 GLenum packed_format_error(GLenum format, GLenum type) {
+  if (type == kUnsignedInt24_8) return format == kDepthStencil ? GL_NO_ERROR : GL_INVALID_OPERATION;
   const PackedType* p = packed_type(type);
   if (!p) return GL_NO_ERROR;
   const bool fits = p->components == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
@@ -252,7 +255,9 @@ GLenum format_type_error(GLenum format, GLenum type) {
     return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
   }
   if (pixel_type_size(type) == 0) return GL_INVALID_ENUM;
-  return packed_format_error(format, type);
+  // Mesa's order: a packed type with a format it does not pack first, then the format's types.
+  if (const GLenum e = packed_format_error(format, type); e != GL_NO_ERROR) return e;
+  return format == kDepthStencil && type != kUnsignedInt24_8 ? GL_INVALID_ENUM : GL_NO_ERROR;
 }
 
 namespace {
@@ -357,7 +362,7 @@ std::int64_t ClientImage::index(int x, int y) const {
     case GL_BYTE: return load<GLbyte>(p);
     case GL_UNSIGNED_SHORT: return load<GLushort>(p);
     case GL_SHORT: return load<GLshort>(p);
-    case GL_UNSIGNED_INT: return load<GLuint>(p);
+    case GL_UNSIGNED_INT: case kUnsignedInt24_8: return load<GLuint>(p);
     case GL_INT: return load<GLint>(p);
     case GL_FLOAT: {
       const float f = load<GLfloat>(p);

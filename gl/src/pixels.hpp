@@ -128,7 +128,8 @@ void unpack_rgba_image(const GlContext& c, const PixelStore& store, int row_pixe
                        int height, GLenum format, GLenum type, const void* pixels, float* out);
 
 /// Elements per pixel of any GL 1.1 pixel format (GL_COLOR_INDEX, GL_STENCIL_INDEX and
-/// GL_DEPTH_COMPONENT have one; the colour formats as color_format_components); 0 for others.
+/// GL_DEPTH_COMPONENT have one, and GL_DEPTH_STENCIL's one packed element; the colour formats
+/// as color_format_components); 0 for others.
 int format_components(GLenum format);
 
 /// Whether `format` holds colour components (as opposed to an index or a depth).
@@ -138,10 +139,12 @@ bool is_color_format(GLenum format);
 /// enums themselves are wrong (GL 1.5 tables 3.5-3.8; Mesa's codes): GL_INVALID_ENUM for an
 /// unknown format or type and for GL_BITMAP with anything but an index format,
 /// GL_INVALID_OPERATION for a packed type with a format of other than its components
-/// (packed_format_error); GL_NO_ERROR otherwise.
+/// (packed_format_error), GL_DEPTH_STENCIL with any type but GL_UNSIGNED_INT_24_8
+/// GL_INVALID_ENUM; GL_NO_ERROR otherwise.
 GLenum format_type_error(GLenum format, GLenum type);
 /// GL_INVALID_OPERATION when `type` is packed and `format` is not one it packs (GL_RGB for
-/// the 3-component types, GL_RGBA and GL_BGRA for the 4-component ones); else GL_NO_ERROR.
+/// the 3-component types, GL_RGBA and GL_BGRA for the 4-component ones, GL_DEPTH_STENCIL for
+/// GL_UNSIGNED_INT_24_8); else GL_NO_ERROR.
 GLenum packed_format_error(GLenum format, GLenum type);
 
 /// A client image of `width`-pixel rows as glPixelStore's parameters lay it out (GL 1.1

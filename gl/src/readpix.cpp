@@ -217,11 +217,25 @@ void put_stencil(ClientImageWriter& w, int x, int y, GLenum type, std::uint8_t s
   }
 }
 
+// A GL_UNSIGNED_INT_24_8 pixel (EXT_packed_depth_stencil): the depth buffer's 24 bits (a
+// 16-bit buffer's widened, a scaled or biased depth converted again) over the stencil index
+// after its transfer operations.
+GLuint packed_depth_stencil(const GlContext& c, float depth, std::uint8_t stencil) {
+  const PixelTransfer& t = c.pixel;
+  std::uint32_t z = stored_depth(depth, c.depth_bits);
+  if (c.depth_bits == 16 || t.depth_scale != 1.0f || t.depth_bias != 0.0f) {
+    const float d = transfer_depth(t, float(double(z) / (c.depth_bits == 16 ? 65535.0 : 16777215.0)));
+    z = std::uint32_t(std::lround(double(d) * 16777215.0));
+  }
+  return GLuint(z << 8 | transfer_stencil(t, stencil));
+}
+
 void read_depth_stencil(const GlContext& c, const ReadRect& r, GLenum format, GLenum type, ClientImageWriter& w) {
   for (int j = r.y0; j < r.y1; ++j) {
     for (int i = r.x0; i < r.x1; ++i) {
       const std::size_t px = std::size_t(r.y + j) * std::size_t(c.fb.width) + std::size_t(r.x + i);
       if (format == GL_DEPTH_COMPONENT) put_depth(w, i, j, type, stored_depth(c.fb.depth[px], c.depth_bits), c.depth_bits, c);
+      else if (format == kDepthStencil) put(w, i, j, 0, packed_depth_stencil(c, c.fb.depth[px], c.fb.stencil[px]));
       else put_stencil(w, i, j, type, transfer_stencil(c.pixel, c.fb.stencil[px]));
     }
   }
@@ -232,7 +246,8 @@ GLenum read_error(const GlContext& c, GLsizei width, GLsizei height, GLenum form
   if (width < 0 || height < 0) return GL_INVALID_VALUE;
   if (const GLenum e = format_type_error(format, type); e != GL_NO_ERROR) return e;
   if (format == GL_COLOR_INDEX) return GL_INVALID_OPERATION;  // an RGBA context
-  if ((format == GL_DEPTH_COMPONENT && c.depth_bits == 0) || (format == GL_STENCIL_INDEX && c.stencil_bits == 0)) {
+  if (((format == GL_DEPTH_COMPONENT || format == kDepthStencil) && c.depth_bits == 0) ||
+      ((format == GL_STENCIL_INDEX || format == kDepthStencil) && c.stencil_bits == 0)) {
     return GL_INVALID_OPERATION;
   }
   if (is_color_format(format) && c.buffers.read_buffer == GL_NONE) return GL_INVALID_OPERATION;

@@ -36,21 +36,26 @@ RgbaImage read_framebuffer(GlContext& c, int x, int y, int width, int height, st
 }
 
 // GL 1.4: a depth texture's rectangle copied from the depth buffer (pixels outside the
-// framebuffer not read), into (x0, y0) of a depth level.
+// framebuffer not read), into (x0, y0) of a depth level; a depth-stencil level's stencil
+// indices from the stencil buffer.
 // The depth buffer's values are its stored 24 (or 16) bits, as Mesa's Z24 buffer holds them,
 // then kept as the texture's bits keep them.
-void copy_depths(GlContext& c, int x, int y, int width, int height, int x0, int y0, int bits, TextureLevel& core) {
+void copy_depths(GlContext& c, int x, int y, int width, int height, int x0, int y0, TexImage& img, TextureLevel& core) {
   const double max = c.depth_bits == 16 ? 65535.0 : 16777215.0;
+  const int bits = img.format.bits[0];
+  const bool stencil = !img.stencil.empty() && c.stencil_bits > 0;
   settle_clears(c);
   for (int j = 0; j < height; ++j) {
     const long fy = long(y) + j;
     for (int i = 0; i < width; ++i) {
       const long fx = long(x) + i;
       if (fx < 0 || fy < 0 || fx >= c.fb.width || fy >= c.fb.height || c.fb.depth.empty()) continue;
-      const double d = std::clamp(double(c.fb.depth[std::size_t(fy) * std::size_t(c.fb.width) + std::size_t(fx)]), 0.0, 1.0);
+      const std::size_t from = std::size_t(fy) * std::size_t(c.fb.width) + std::size_t(fx);
+      const std::size_t to = std::size_t(y0 + j) * std::size_t(core.width) + std::size_t(x0 + i);
+      const double d = std::clamp(double(c.fb.depth[from]), 0.0, 1.0);
       const float buffer = float(std::round(d * max) / max);
-      core.depth_values[std::size_t(y0 + j) * std::size_t(core.width) + std::size_t(x0 + i)] =
-          bits == int(c.depth_bits) ? buffer : stored_depth_value(buffer, bits);
+      core.depth_values[to] = bits == int(c.depth_bits) ? buffer : stored_depth_value(buffer, bits);
+      if (stencil) img.stencil[to] = c.fb.stencil[from];
     }
   }
 }
@@ -91,12 +96,15 @@ void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum i
   // The border is stripped, as glTexImage strips it.
   const bool strip_rows = dims == 2 && border && height >= 3;
   const int inner_w = width - 2 * border, inner_h = strip_rows ? height - 2 : height;
-  if (stored.depth && c.depth_bits == 0) return c.set_error(GL_INVALID_OPERATION);  // no depth buffer
+  // No depth buffer (or, for a depth-stencil format, no stencil buffer): Mesa's error.
+  if (stored.depth && (c.depth_bits == 0 || (stored.stencil_bits && c.stencil_bits == 0))) {
+    return c.set_error(GL_INVALID_OPERATION);
+  }
   TextureObject& t = *image_texture(c, target);
   if (stored.depth) {
     texture_changing(c, t);
     define_level(t, level, GLint(internal), inner_w, inner_h);
-    copy_depths(c, x + border, y + (strip_rows ? 1 : 0), inner_w, inner_h, 0, 0, stored.bits[0],
+    copy_depths(c, x + border, y + (strip_rows ? 1 : 0), inner_w, inner_h, 0, 0, t.images[std::size_t(level)],
                 t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
@@ -130,7 +138,7 @@ void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLin
   if (width == 0 || height == 0) return;
   if (img.format.depth) {
     texture_changing(c, t);
-    copy_depths(c, x, y, width, height, xoffset, yoffset, img.format.bits[0], t.texture.levels[std::size_t(level)]);
+    copy_depths(c, x, y, width, height, xoffset, yoffset, img, t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
   std::vector<std::uint8_t> inside;

@@ -86,17 +86,20 @@ bool StoredFormat::wide() const {
   return false;
 }
 
-// GL 1.4's depth formats, with the sizes Mesa 22 reports for them (GL_DEPTH_COMPONENT: 24).
+// GL 1.4's depth formats, with the sizes Mesa 22 reports for them (GL_DEPTH_COMPONENT: 24), and
+// EXT_packed_depth_stencil's (24 bits of depth, 8 of stencil).
 bool depth_format(GLint internal, StoredFormat& out) {
-  int bits = 0;
+  int bits = 0, stencil = 0;
   switch (internal) {
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: bits = 24; break;
     case GL_DEPTH_COMPONENT16: bits = 16; break;
     case GL_DEPTH_COMPONENT32: bits = 32; break;
+    case GLint(kDepthStencil): case GLint(kDepth24Stencil8): bits = 24, stencil = 8; break;
     default: return false;
   }
   out = make(TextureFormat::kLuminance, {bits});
   out.depth = true;
+  out.stencil_bits = stencil;
   return true;
 }
 
@@ -170,6 +173,7 @@ void texel_to_rgba(TextureFormat base, const float* c, float rgba[4]) {
 
 int component_size(const StoredFormat& f, GLenum pname) {
   using F = TextureFormat;
+  if (pname == kTextureStencilSize) return f.stencil_bits;
   if (f.depth || pname == GL_TEXTURE_DEPTH_SIZE) return f.depth && pname == GL_TEXTURE_DEPTH_SIZE ? f.bits[0] : 0;
   const bool rgb = f.base == F::kRgb || f.base == F::kRgba;
   switch (pname) {

@@ -12,6 +12,14 @@
 
 namespace shadelab::gl {
 
+/// EXT_packed_depth_stencil (core in GL 3.0; GL 1.5's headers do not name it): depth and
+/// stencil in one pixel, GL_UNSIGNED_INT_24_8's depth in the high 24 bits and stencil in the
+/// low 8, and the texture format that holds both.
+inline constexpr GLenum kDepthStencil = 0x84F9;       // GL_DEPTH_STENCIL_EXT
+inline constexpr GLenum kUnsignedInt24_8 = 0x84FA;    // GL_UNSIGNED_INT_24_8_EXT
+inline constexpr GLenum kDepth24Stencil8 = 0x88F0;    // GL_DEPTH24_STENCIL8_EXT
+inline constexpr GLenum kTextureStencilSize = 0x88F1;  // GL_TEXTURE_STENCIL_SIZE_EXT
+
 /// How an internal format is kept: its base format and the bits of each of the base format's
 /// components, in their order (R, G, B, A; L; L, A; I; A). 8 bits or fewer are kept in the
 /// core's RGBA8 level (bit-replicated, as llvmpipe expands them for sampling); more bits are
@@ -24,6 +32,10 @@ struct StoredFormat {
   /// GL_TEXTURE_DEPTH_SIZE reports), kept as floats in TextureLevel::depth_values (llvmpipe
   /// reads back the floats given, whatever the size); `base` is unused.
   bool depth = false;
+  /// A depth-stencil format (EXT_packed_depth_stencil): the stencil's bits besides (what
+  /// GL_TEXTURE_STENCIL_SIZE reports), its indices kept in TexImage::stencil for
+  /// glGetTexImage; sampling reads the depth.
+  int stencil_bits = 0;
 
   bool wide() const;  ///< some component has more than 8 bits
 };

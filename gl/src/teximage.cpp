@@ -24,7 +24,7 @@ bool is_pixel_type(GLenum type) {
 
 bool is_pixel_format(GLenum format) {
   return color_format_components(format) != 0 || format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ||
-         format == GL_DEPTH_COMPONENT;
+         format == GL_DEPTH_COMPONENT || format == kDepthStencil;
 }
 
 // Mesa's _mesa_error_check_format_and_type and texture_formats_agree for a colour texture:
@@ -33,27 +33,32 @@ bool is_pixel_format(GLenum format) {
 GLenum check_format_and_type(GLenum format, GLenum type) {
   if (!is_pixel_format(format) || !is_pixel_type(type)) return GL_INVALID_ENUM;
   if (type == GL_BITMAP && format != GL_COLOR_INDEX && format != GL_STENCIL_INDEX) return GL_INVALID_ENUM;
-  return packed_format_error(format, type);
+  return format_type_error(format, type);
 }
 
-// Mesa's texture_formats_agree: depth images for depth internal formats only (GL 1.4), and
-// the other way round; no stencil images.
+// Mesa's texture_formats_agree: depth (and depth-stencil) images for depth internal formats
+// only (GL 1.4), and the other way round; no stencil images.
 bool formats_agree(GLenum format, bool depth_internal) {
-  return format != GL_STENCIL_INDEX && (format == GL_DEPTH_COMPONENT) == depth_internal;
+  return format != GL_STENCIL_INDEX && (format == GL_DEPTH_COMPONENT || format == kDepthStencil) == depth_internal;
 }
 
 // A GL_DEPTH_COMPONENT client image's values (converted, scaled and biased as glDrawPixels'
-// depth, section 3.6.4), clamped to [0, 1], stored at (x, y) of a depth level.
-void store_depths(const GlContext& c, int x0, int y0, int width, int height, GLenum type, const void* pixels,
-                  int bits, TextureLevel& core) {
+// depth, section 3.6.4), clamped to [0, 1], stored at (x, y) of a depth level; a
+// GL_DEPTH_STENCIL image's stencil indices too, when the level keeps them.
+void store_depths(const GlContext& c, int x0, int y0, int width, int height, GLenum format, GLenum type,
+                  const void* pixels, TexImage& img, TextureLevel& core) {
   if (!pixels || width <= 0 || height <= 0) return;
   std::vector<float> depths;
-  unpack_depth_image(c, pixels, width, height, type, depths);
+  std::vector<std::uint8_t> stencil;
+  if (format == kDepthStencil) unpack_depth_stencil_image(c, pixels, width, height, depths, stencil);
+  else unpack_depth_image(c, pixels, width, height, type, depths);
+  const bool keeps_stencil = !stencil.empty() && !img.stencil.empty();
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
-      const float d = depths[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-      core.depth_values[std::size_t(y0 + y) * std::size_t(core.width) + std::size_t(x0 + x)] =
-          stored_depth_value(d, bits);
+      const std::size_t from = std::size_t(y) * std::size_t(width) + std::size_t(x);
+      const std::size_t to = std::size_t(y0 + y) * std::size_t(core.width) + std::size_t(x0 + x);
+      core.depth_values[to] = stored_depth_value(depths[from], img.format.bits[0]);
+      if (keeps_stencil) img.stencil[to] = stencil[from];
     }
   }
 }
@@ -210,7 +215,8 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   if (stored.depth) {  // GL 1.4: a depth image (its border, if any, left out of the client image's rows)
     texture_changing(c, t);
     define_level(t, level, internal, inner_w, inner_h, 1);
-    store_depths(c, 0, 0, inner_w, inner_h, type, pixels, stored.bits[0], t.texture.levels[std::size_t(level)]);
+    store_depths(c, 0, 0, inner_w, inner_h, format, type, pixels, t.images[std::size_t(level)],
+                 t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
   texture_changing(c, t);
@@ -250,7 +256,7 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   if (width == 0 || height == 0 || depth == 0 || !pixels) return;
   if (img.format.depth) {
     texture_changing(c, t);
-    store_depths(c, x, y, width, height, type, pixels, img.format.bits[0], t.texture.levels[std::size_t(level)]);
+    store_depths(c, x, y, width, height, format, type, pixels, img, t.texture.levels[std::size_t(level)]);
     return image_changed(c, target, t, level);
   }
   texture_changing(c, t);
@@ -313,6 +319,7 @@ bool define_level(TextureObject& t, int level, GLint internal_format, int width,
   img.internal_format = internal_format;
   img.format = format;
   if (format.wide()) img.wide.assign(texels * std::size_t(format.components), 0);
+  if (format.stencil_bits) img.stencil.assign(texels, 0);
   TextureLevel& core = t.texture.levels[l];
   core.width = width, core.height = height, core.depth = depth;
   core.rgba.assign(texels * 4, 0);

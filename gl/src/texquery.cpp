@@ -37,7 +37,7 @@ bool is_level_pname(GLenum pname) {
     case GL_TEXTURE_WIDTH: case GL_TEXTURE_HEIGHT: case kTextureDepth: case GL_TEXTURE_BORDER:
     case GL_TEXTURE_INTERNAL_FORMAT: case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE:
     case GL_TEXTURE_BLUE_SIZE: case GL_TEXTURE_ALPHA_SIZE: case GL_TEXTURE_LUMINANCE_SIZE:
-    case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_DEPTH_SIZE:
+    case GL_TEXTURE_INTENSITY_SIZE: case GL_TEXTURE_COMPRESSED: case GL_TEXTURE_DEPTH_SIZE: case kTextureStencilSize:
       return true;
     default: return false;
   }
@@ -166,6 +166,7 @@ void pack_component(const Stored& s, GLenum type, bool swap, unsigned char* p) {
 
 // A depth level as GL_DEPTH_COMPONENT values of `type` (the floats kept, converted as
 // glReadPixels converts depths; byte swapping as the pack state says).
+// A depth-stencil level as GL_DEPTH_STENCIL reads it: GL_UNSIGNED_INT_24_8 pixels.
 void get_depth_image(GlContext& c, const TextureObject& t, int level, GLenum type, void* pixels) {
   if (!pixels) return;
   const TexImage& img = t.images[std::size_t(level)];
@@ -176,9 +177,13 @@ void get_depth_image(GlContext& c, const TextureObject& t, int level, GLenum typ
   const bool swap = c.pack.swap_bytes;
   for (int y = 0; y < img.height; ++y) {
     for (int x = 0; x < img.width; ++x) {
-      const float d = core.depth_values[std::size_t(y) * std::size_t(img.width) + std::size_t(x)];
+      const std::size_t i = std::size_t(y) * std::size_t(img.width) + std::size_t(x);
+      const float d = core.depth_values[i];
       unsigned char* p = static_cast<unsigned char*>(pixels) + layout.offset(x, y);
       switch (type) {
+        case kUnsignedInt24_8:
+          put(p, GLuint(std::lround(double(d) * 16777215.0)) << 8 | (img.stencil.empty() ? 0u : img.stencil[i]), swap);
+          break;
         case GL_UNSIGNED_BYTE: *p = GLubyte(std::lround(d * 255.0f)); break;
         case GL_BYTE: *p = static_cast<unsigned char>(GLbyte(std::lround(d * 127.0f))); break;
         case GL_UNSIGNED_SHORT: put(p, GLushort(std::lround(d * 65535.0f)), swap); break;
@@ -197,13 +202,17 @@ void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLen
   }
   if (level < 0 || level >= target_levels(target)) return c.set_error(GL_INVALID_VALUE);
   const bool known_format = color_format_components(format) != 0 || format == GL_COLOR_INDEX ||
-                            format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT;
+                            format == GL_STENCIL_INDEX || format == GL_DEPTH_COMPONENT || format == kDepthStencil;
   if (!known_format || pixel_type_size(type) == 0) return c.set_error(GL_INVALID_ENUM);
-  if (const GLenum e = packed_format_error(format, type); e != GL_NO_ERROR) return c.set_error(e);
+  if (const GLenum e = format_type_error(format, type); e != GL_NO_ERROR) return c.set_error(e);
   TextureObject& t = *image_texture(c, target);
-  // A depth texture reads back as GL_DEPTH_COMPONENT only, and only it does (GL 1.4).
-  const bool depth_texture = std::size_t(level) < t.images.size() && t.images[std::size_t(level)].format.depth;
-  if (format == GL_STENCIL_INDEX || (format == GL_DEPTH_COMPONENT) != depth_texture) {
+  // A depth texture reads back as GL_DEPTH_COMPONENT only, and only it does (GL 1.4); a
+  // depth-stencil one as GL_DEPTH_STENCIL too, and only it does.
+  const TexImage* level_image = std::size_t(level) < t.images.size() ? &t.images[std::size_t(level)] : nullptr;
+  const bool depth_texture = level_image && level_image->format.depth;
+  const bool depth_format = format == GL_DEPTH_COMPONENT || format == kDepthStencil;
+  if (format == GL_STENCIL_INDEX || depth_format != depth_texture ||
+      (format == kDepthStencil && level_image->format.stencil_bits == 0)) {
     return c.set_error(GL_INVALID_OPERATION);
   }
   if (depth_texture) return get_depth_image(c, t, level, type, pixels);

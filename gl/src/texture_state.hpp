@@ -30,6 +30,7 @@ struct TexImage {
   GLint internal_format = GL_RGBA;  // as given; Mesa reports GL_RGBA for an undefined image
   StoredFormat format;
   std::vector<std::uint16_t> wide;  // format.components per texel when format.wide()
+  std::vector<std::uint8_t> stencil;  // a texel's stencil index when format.stencil_bits
 };
 
 /// A texture object (GL 1.1 section 3.8.8): its target, fixed at its first binding, its
