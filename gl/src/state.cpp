@@ -138,7 +138,12 @@ void pixel_store(GlContext& c, GLenum pname, double value) {
 }
 
 void finish_drawing(GlContext& c) {
-  if (c.surface) return c.surface->flushed(c);  // presents what the drawable shows
+  if (c.surface) {
+    // The draws are rasterized (a double-buffered drawable's back buffer is presented at the
+    // swap, with the clears left to it); the drawable presents what it shows.
+    if (c.pipeline) c.pipeline->finish_draws();
+    return c.surface->flushed(c);
+  }
   present(c);
   if (c.depth_exported) export_depth(c);
   capture_frame_end(c);  // an OSMesa buffer's frame
