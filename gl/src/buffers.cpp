@@ -98,6 +98,11 @@ void leave_drawable(GlContext& c) {
 }
 
 void swapped_color_buffers(GlContext& c) {
+  if (c.front_in_fb) {  // a front buffer read again when the swap followed a resize: stale now
+    std::swap(c.fb.color, c.other_color);
+    c.front_in_fb = false;
+    for (std::uint8_t& f : c.tiles.flags) f = std::uint8_t(TileMap::kChanged | (f & TileMap::kDepthClear));
+  }
   c.other_color = {};
   select_draw_buffer(c);
 }

@@ -190,6 +190,19 @@ static void front_and_back(void) {
   glFinish();
   check(x_pixel(win, 32, 24) == 0xffffff && read_from(GL_BACK, 32, 24) == 0x808000, "front.after_swap",
         "drawing into the front buffer after a swap is not shown, or reached the back buffer");
+  /* The window grows while the front buffer is the draw buffer: the swap finds the new size. */
+  XResizeWindow(dpy, win, 80, 60);
+  XSync(dpy, False);
+  glXSwapBuffers(dpy, win);
+  glViewport(0, 0, 80, 60);
+  clear_to(1, 1, 0); /* the front buffer, at the new size */
+  glFlush();
+  glDrawBuffer(GL_BACK);
+  clear_to(1, 0, 1);
+  check(x_pixel(win, 70, 50) == 0xffff00 && read_from(GL_BACK, 70, 50) == 0xff00ff, "front.resized",
+        "after a resize the front or the back buffer is not the drawable's size");
+  glXSwapBuffers(dpy, win);
+  check(x_pixel(win, 70, 50) == 0xff00ff, "front.resized_swap", "the swap after a resize did not show the back buffer");
   glXMakeContextCurrent(dpy, None, None, NULL);
   glXDestroyContext(dpy, ctx);
   XDestroyWindow(dpy, win);
