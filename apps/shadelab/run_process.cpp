@@ -47,6 +47,16 @@ bool wait_for(pid_t pid, double seconds, int& status) {
   }
 }
 
+// The program's last frame: it flushes its buffered output (what it printed before the frame
+// reaches its files and pipes), then says so; waited for a second at most.
+void let_output_out(int socket_fd) {
+  const char last = gl::platform::run_link::kLastFrame;
+  if (write(socket_fd, &last, 1) != 1) return;
+  pollfd p{socket_fd, POLLIN, 0};
+  char done = 0;
+  if (poll(&p, 1, 1000) > 0 && read(socket_fd, &done, 1) == 1) return;
+}
+
 // Ends a process group: SIGTERM, then SIGKILL if it lingers; reaps `leader` if still there.
 void end_group(pid_t leader, bool leader_reaped) {
   kill(-leader, SIGTERM);
@@ -239,10 +249,11 @@ ChildResult run_child(const ChildOptions& o) {
     const bool go_on = !o.on_frame || o.on_frame(result.frames, frame);
     if (!go_on || (o.stop_after_frames > 0 && result.frames >= o.stop_after_frames)) {
       result.end = go_on ? ChildResult::End::kFramesDone : ChildResult::End::kFrameError;
+      if (go_on) let_output_out(socket_fd);
       end_group(pid, false);
       break;
     }
-    const char answer = 1;
+    const char answer = gl::platform::run_link::kGoOn;
     if (write(socket_fd, &answer, 1) != 1) close(socket_fd), socket_fd = -1;
   }
   if (socket_fd >= 0) close(socket_fd);

@@ -4,11 +4,12 @@
    with the scene turned a little each frame. Built with `cc glut_scene.c -lGL -lGLU -lglut -lm`
    and nothing of shadelab's: it runs on Mesa and on shadelab alike.
 
-     glut_scene [--single] [--frames N] [--dump N FILE.ppm]
+     glut_scene [--single] [--frames N] [--dump N FILE.ppm] [--say TEXT]
 
    --single         a single-buffered window (GLUT_SINGLE): each frame ends with glFlush
    --frames N       exits (status 0) after showing frame N
-   --dump N FILE    before showing frame N, writes the frame as a binary PPM (glReadPixels) */
+   --dump N FILE    before showing frame N, writes the frame as a binary PPM (glReadPixels)
+   --say TEXT       prints TEXT on standard output at the start, left in stdio's buffer */
 #include <GL/glut.h>
 #include <GL/glu.h>
 
@@ -112,6 +113,7 @@ int main(int argc, char** argv) {
     if (strcmp(argv[i], "--single") == 0) single = 1;
     else if (strcmp(argv[i], "--frames") == 0 && i + 1 < argc) last_frame = atoi(argv[++i]);
     else if (strcmp(argv[i], "--dump") == 0 && i + 2 < argc) dump_frame = atoi(argv[++i]), dump_path = argv[++i];
+    else if (strcmp(argv[i], "--say") == 0 && i + 1 < argc) printf("%s\n", argv[++i]);  /* buffered: no flush */
   }
   glutInitDisplayMode((single ? GLUT_SINGLE : GLUT_DOUBLE) | GLUT_RGB | GLUT_DEPTH);
   glutInitWindowSize(320, 240);

@@ -31,6 +31,15 @@ expect 124 "did not end within" -- "$shadelab" run --timeout 1 --frames 1 -- "$m
 expect 1 "" -- "$shadelab" run -- "$glut" --frames 1
 # Xvfb that cannot be started (not on PATH).
 expect 1 "Xvfb" -- env PATH=/nonexistent "$shadelab" run --xvfb -- "$misbehave" status 0
+# A program ended after its frames: what it printed into its buffered standard output is not lost.
+"$shadelab" run --xvfb --frames 1 -- "$glut" --say "printed before the first frame" >"$out/said.txt" 2>/dev/null
+said=$(cat "$out/said.txt")
+if [ "$said" = "printed before the first frame" ]; then
+  echo "ok: the program's buffered output reaches the pipe when --frames ends it"
+else
+  echo "FAIL: the program's buffered output was lost when --frames ended it (got: '$said')"; failures=$((failures + 1))
+fi
+
 # A program that ends before its frames are counted: its own status, and a note.
 expect 0 "ended after" -- "$shadelab" run --xvfb --frames 50 -- "$glut" --frames 2
 # --explain needs a pixel; a frame the program never shows is said (status 1).

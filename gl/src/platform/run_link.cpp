@@ -51,12 +51,23 @@ bool send_all(int fd, const void* data, std::size_t n) {
   return true;
 }
 
-bool wait_answer(int fd) {
+// The runner's answer to a frame; 0 when the socket failed or closed.
+char wait_answer(int fd) {
   char answer = 0;
   for (;;) {
     ssize_t got = recv(fd, &answer, 1, 0);
     if (got < 0 && errno == EINTR) continue;
-    return got == 1;
+    return got == 1 ? answer : 0;
+  }
+}
+
+// The runner ends the program after this frame: its buffered output reaches its files and
+// pipes first (the runner waits for the byte sent back), then the program waits to be ended.
+void end_of_run(int fd) {
+  std::fflush(nullptr);
+  const char done = kGoOn;
+  if (!send_all(fd, &done, 1)) return;
+  while (wait_answer(fd) != 0) {
   }
 }
 
@@ -73,9 +84,10 @@ void frame(const Surface& surface) {
     surface.copy_rgba(l.pixels);
     h.pixel_bytes = std::uint32_t(l.pixels.size());
   }
-  bool ok = send_all(l.fd, &h, sizeof h) && (h.pixel_bytes == 0 || send_all(l.fd, l.pixels.data(), l.pixels.size())) &&
-            wait_answer(l.fd);
-  if (!ok) l.fd = -1;
+  const bool sent = send_all(l.fd, &h, sizeof h) && (h.pixel_bytes == 0 || send_all(l.fd, l.pixels.data(), l.pixels.size()));
+  const char answer = sent ? wait_answer(l.fd) : 0;
+  if (answer == kLastFrame) end_of_run(l.fd);
+  if (answer != kGoOn) l.fd = -1;
 }
 
 bool requested_size(int& width, int& height) {

@@ -6,7 +6,9 @@
 // it never writes files, prints or exits. Without the runner's variables nothing happens.
 //
 // Protocol (one stream socket, native byte order): the program sends a FrameHeader followed by
-// `pixel_bytes` bytes of RGBA rows from the top, then reads one byte (any value: go on).
+// `pixel_bytes` bytes of RGBA rows from the top, then reads one byte: kGoOn, or kLastFrame, after
+// which it flushes its standard I/O streams (what a program ended after N frames printed is not
+// lost in its buffers), sends one byte back and waits to be ended.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +23,9 @@ namespace run_link {
 inline constexpr const char* kSocketVariable = "SHADELAB_RUN_FD";        ///< the socket's fd
 inline constexpr const char* kCaptureVariable = "SHADELAB_RUN_CAPTURE";  ///< "1": send pixels
 inline constexpr const char* kSizeVariable = "SHADELAB_RUN_SIZE";        ///< "WxH": window size
+
+/// The runner's answers to a frame.
+inline constexpr char kGoOn = 1, kLastFrame = 2;
 
 struct FrameHeader {
   char magic[4];  ///< "SLF1"
