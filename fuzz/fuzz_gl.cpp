@@ -109,6 +109,8 @@ class Input {
         // EXT_packed_depth_stencil (GL 1.5's header does not name them): GL_DEPTH_STENCIL_EXT,
         // GL_UNSIGNED_INT_24_8_EXT, GL_DEPTH24_STENCIL8_EXT, GL_TEXTURE_STENCIL_SIZE_EXT.
         0x84F9u, 0x84FAu, 0x88F0u, 0x88F1u,
+        // ARB_texture_rectangle: the target, its binding, its proxy, its maximum size.
+        0x84F5u, 0x84F6u, 0x84F7u, 0x84F8u,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }

@@ -28,7 +28,7 @@ constexpr GLenum kCapabilities[] = {
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, kTextureRectangle, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
     // GL 1.3
     GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
 };
@@ -73,6 +73,7 @@ void write_texture_parameters(GlContext& c, GLenum target, const std::array<floa
 // A texture unit's capabilities (GL 1.3 section 2.7: glEnable addresses the active unit's).
 bool texture_unit_capability(GLenum cap) {
   return cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || cap == GL_TEXTURE_3D || cap == GL_TEXTURE_CUBE_MAP ||
+         cap == kTextureRectangle ||
          (cap >= GL_TEXTURE_GEN_S && cap <= GL_TEXTURE_GEN_Q);
 }
 
@@ -120,7 +121,8 @@ void save_textures(GlContext& c, AttribRecord& r) {
   const std::pair<GLenum, GLenum> targets[] = {{GL_TEXTURE_1D, GL_TEXTURE_BINDING_1D},
                                                {GL_TEXTURE_2D, GL_TEXTURE_BINDING_2D},
                                                {GL_TEXTURE_3D, GL_TEXTURE_BINDING_3D},
-                                               {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP}};
+                                               {GL_TEXTURE_CUBE_MAP, GL_TEXTURE_BINDING_CUBE_MAP},
+                                               {kTextureRectangle, kTextureBindingRectangle}};
   for_each_unit(c, [&](std::size_t unit) {
     for (const std::pair<GLenum, GLenum>& tb : targets) {
       // (Not a structured binding: clang 14, the fuzz build's compiler, cannot capture one.)

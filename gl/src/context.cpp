@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "gl/src/capture.hpp"
+#include "gl/src/texture.hpp"
 
 namespace shadelab::gl {
 
@@ -19,12 +20,9 @@ GlContext::GlContext(GLenum format, int depth, int stencil, const GlContext* sha
   // GL's default back material equals the front one; both are Material's defaults.
   // Each target's default texture (name 0), with the target's dimensions: one object the
   // texture units share.
-  for (GLenum target : {GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP}) {
+  for (GLenum target : {GLenum(GL_TEXTURE_1D), GLenum(GL_TEXTURE_2D), GLenum(GL_TEXTURE_3D), GLenum(GL_TEXTURE_CUBE_MAP), kTextureRectangle}) {
     auto object = std::make_shared<TextureObject>();
-    object->target = target;
-    object->texture.dimensions = texture_dimensions(target);
-    object->texture.cube_map = target == GL_TEXTURE_CUBE_MAP;
-    if (target == GL_TEXTURE_CUBE_MAP) object->faces.resize(6);
+    set_texture_target(*object, target);
     for (TextureUnitState& unit : textures.units) {
       TextureBinding& b = unit.binding(target);
       b.default_object = b.object = object;

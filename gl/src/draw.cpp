@@ -368,6 +368,11 @@ void begin_primitive(GlContext& c, GLenum mode) {
   p.rescale = 1.0f / std::sqrt(inv[0][2] * inv[0][2] + inv[1][2] * inv[1][2] + inv[2][2] * inv[2][2]);
   for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
     p.texture_matrix[u] = c.texture_matrices[u].top();
+    // A rectangle texture's texel coordinates, normalized for the pipeline (feedback reports
+    // them as they are).
+    const glm::vec2 scale = c.render_mode == GL_RENDER ? rectangle_scale(c, u) : glm::vec2(1.0f);
+    if (scale != glm::vec2(1.0f)) p.texture_matrix[u] = glm::mat4(glm::vec4(scale.x, 0, 0, 0), glm::vec4(0, scale.y, 0, 0),
+                                                                  glm::vec4(0, 0, 1, 0), glm::vec4(0, 0, 0, 1)) * p.texture_matrix[u];
     p.identity_texture_matrix[u] = p.texture_matrix[u] == glm::mat4(1.0f);
   }
   p.lights.clear();

@@ -164,7 +164,12 @@ ShadeState rectangle_shade_state(GlContext& c) {
   return shade;
 }
 
-void draw_rectangle(GlContext& c, const FragmentRect& rect) {
+void draw_rectangle(GlContext& c, const FragmentRect& given) {
+  FragmentRect rect = given;
+  for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {  // a rectangle texture's texel coordinates
+    const glm::vec2 scale = rectangle_scale(c, u);
+    rect.texcoords[u].x *= scale.x, rect.texcoords[u].y *= scale.y;
+  }
   make_pipeline(c);
   for_each_draw_buffer(c, [&](bool first) {
     draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, first ? query_counts(c) : nullptr,

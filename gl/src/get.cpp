@@ -207,6 +207,7 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_TEXTURE_BINDING_2D: out = ints({double(c.textures.unit().binding_2d.name)}); return true;
     case GL_TEXTURE_BINDING_3D: out = ints({double(c.textures.unit().binding_3d.name)}); return true;
     case GL_TEXTURE_BINDING_CUBE_MAP: out = ints({double(c.textures.unit().binding_cube.name)}); return true;
+    case kTextureBindingRectangle: out = ints({double(c.textures.unit().binding_rect.name)}); return true;
     // GL 1.3 section 2.7 (table 6.19, 6.7): the active and client active units.
     case GL_ACTIVE_TEXTURE: out = ints({double(GL_TEXTURE0 + c.textures.active)}); return true;
     case GL_CLIENT_ACTIVE_TEXTURE: out = ints({double(GL_TEXTURE0 + c.arrays.client_active)}); return true;
@@ -293,6 +294,7 @@ bool query_limits(const GlContext& c, GLenum pname, Values& out) {
     case GL_COMPRESSED_TEXTURE_FORMATS: out = ints({}); return true;
     case GL_MAX_3D_TEXTURE_SIZE: out = ints({kMax3dTextureSize}); return true;
     case GL_MAX_CUBE_MAP_TEXTURE_SIZE: out = ints({kMaxTextureSize}); return true;  // llvmpipe's: 16384
+    case kMaxRectangleTextureSize: out = ints({kMaxTextureSize}); return true;
     case GL_MAX_VIEWPORT_DIMS: out = ints({kMaxViewportDim, kMaxViewportDim}); return true;
     case GL_SUBPIXEL_BITS: out = ints({8}); return true;
     case GL_PERSPECTIVE_CORRECTION_HINT: out = ints({double(c.hints[0])}); return true;

@@ -111,6 +111,7 @@ void filter_level(TextureObject& t, int from, int to) {
 void level_changed(TextureObject& t, int level) {
   const Texture& x = t.texture;
   if (!t.generate_mipmap || level != x.base_level || level >= x.max_level) return;
+  if (t.target == kTextureRectangle) return;  // one level (ARB_texture_rectangle)
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) return;
   const TexImage& base = t.images[std::size_t(level)];
   if (base.width <= 0 || base.height <= 0 || base.depth <= 0) return;

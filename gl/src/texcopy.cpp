@@ -85,9 +85,10 @@ void store_inside(const RgbaImage& image, const std::vector<std::uint8_t>& insid
 void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum internal, GLint x, GLint y,
                     GLsizei width, GLsizei height, GLint border) {
   const bool cube = dims == 2 && is_cube_face(target);  // GL 1.3: a cube map's face, square
-  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D) && !cube) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= kMaxTextureLevels) return c.set_error(GL_INVALID_VALUE);
-  if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
+  const bool rect = dims == 2 && target == kTextureRectangle;  // one level, no border
+  if (target != (dims == 1 ? GL_TEXTURE_1D : GL_TEXTURE_2D) && !cube && !rect) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= (rect ? 1 : kMaxTextureLevels)) return c.set_error(GL_INVALID_VALUE);
+  if (border < 0 || border > (rect ? 0 : 1)) return c.set_error(GL_INVALID_VALUE);
   StoredFormat stored;  // the unsized 1 .. 4 are not accepted here (GL 1.1 section 3.8.2)
   if (internal <= 4 || !stored_format(GLint(internal), stored)) return c.set_error(GL_INVALID_ENUM);
   const long max = long(kMaxTextureSize) >> level;
@@ -120,11 +121,13 @@ void copy_tex_image(GlContext& c, int dims, GLenum target, GLint level, GLenum i
 // zoffset).
 void copy_tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint xoffset, GLint yoffset,
                         GLint zoffset, GLint x, GLint y, GLsizei width, GLsizei height) {
+  const bool rect = dims == 2 && target == kTextureRectangle;
   if (target != (dims == 1 ? GL_TEXTURE_1D : dims == 3 ? GL_TEXTURE_3D : GL_TEXTURE_2D) &&
-      !(dims == 2 && is_cube_face(target))) {
+      !(dims == 2 && is_cube_face(target)) && !rect) {
     return c.set_error(GL_INVALID_ENUM);
   }
-  if (level < 0 || level >= (dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels)) return c.set_error(GL_INVALID_VALUE);
+  const int levels = rect ? 1 : dims == 3 ? kMax3dTextureLevels : kMaxTextureLevels;
+  if (level < 0 || level >= levels) return c.set_error(GL_INVALID_VALUE);
   TextureObject& t = *image_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {
     return c.set_error(GL_INVALID_OPERATION);

@@ -79,6 +79,7 @@ bool fits_in_memory(int width, int height, int depth) {
 
 std::vector<TexImage>& proxy_images(GlContext& c, GLenum target) {
   if (target == GL_PROXY_TEXTURE_CUBE_MAP) return c.textures.proxy_cube;
+  if (target == kProxyTextureRectangle) return c.textures.proxy_rect;
   return target == GL_PROXY_TEXTURE_1D ? c.textures.proxy_1d
                                        : target == GL_PROXY_TEXTURE_3D ? c.textures.proxy_3d : c.textures.proxy_2d;
 }
@@ -192,9 +193,12 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   GLenum proxy = dims == 1 ? GL_PROXY_TEXTURE_1D : dims == 3 ? GL_PROXY_TEXTURE_3D : GL_PROXY_TEXTURE_2D;
   const bool cube = dims == 2 && is_cube_target(target);
   if (cube) proxy = GL_PROXY_TEXTURE_CUBE_MAP;
-  if (target != plain && target != proxy && !cube) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
-  if (border < 0 || border > 1) return c.set_error(GL_INVALID_VALUE);
+  // ARB_texture_rectangle: one level, no border.
+  const bool rect = dims == 2 && (target == kTextureRectangle || target == kProxyTextureRectangle);
+  if (rect) proxy = kProxyTextureRectangle;
+  if (target != plain && target != proxy && !cube && !rect) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= (rect ? 1 : max_levels(dims))) return c.set_error(GL_INVALID_VALUE);
+  if (border < 0 || border > (rect ? 0 : 1)) return c.set_error(GL_INVALID_VALUE);
   if (width < 0 || height < 0 || depth < 0) return c.set_error(GL_INVALID_VALUE);
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
   StoredFormat stored;
@@ -239,8 +243,9 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
 // glTexSubImage1D (dims 1), glTexSubImage2D and glTexSubImage3D.
 void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, GLint y, GLint z, GLsizei width,
                    GLsizei height, GLsizei depth, GLenum format, GLenum type, const void* pixels) {
-  if (target != plain_target(dims) && !(dims == 2 && is_cube_face(target))) return c.set_error(GL_INVALID_ENUM);
-  if (level < 0 || level >= max_levels(dims)) return c.set_error(GL_INVALID_VALUE);
+  const bool rect = dims == 2 && target == kTextureRectangle;
+  if (target != plain_target(dims) && !(dims == 2 && is_cube_face(target)) && !rect) return c.set_error(GL_INVALID_ENUM);
+  if (level < 0 || level >= (rect ? 1 : max_levels(dims))) return c.set_error(GL_INVALID_VALUE);
   if (GLenum e = check_format_and_type(format, type)) return c.set_error(e);
   TextureObject& t = *image_texture(c, target);
   if (t.images.size() <= std::size_t(level) || !t.images[std::size_t(level)].defined) {

@@ -19,7 +19,9 @@ constexpr GLenum kTextureDepth = GL_TEXTURE_DEPTH;  // GL 1.2
 
 const std::vector<TexImage>* level_images(GlContext& c, GLenum target) {
   switch (target) {
-    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: return &bound_texture(c, target)->images;
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case kTextureRectangle:
+      return &bound_texture(c, target)->images;
+    case kProxyTextureRectangle: return &c.textures.proxy_rect;
     case GL_PROXY_TEXTURE_1D: return &c.textures.proxy_1d;
     case GL_PROXY_TEXTURE_CUBE_MAP: return &c.textures.proxy_cube;
     case GL_PROXY_TEXTURE_2D: return &c.textures.proxy_2d;
@@ -29,6 +31,7 @@ const std::vector<TexImage>* level_images(GlContext& c, GLenum target) {
 }
 
 int target_levels(GLenum target) {
+  if (target == kTextureRectangle || target == kProxyTextureRectangle) return 1;
   return target == GL_TEXTURE_3D || target == GL_PROXY_TEXTURE_3D ? kMax3dTextureLevels : kMaxTextureLevels;
 }
 
@@ -197,7 +200,8 @@ void get_depth_image(GlContext& c, const TextureObject& t, int level, GLenum typ
 }
 
 void get_tex_image(GlContext& c, GLenum target, GLint level, GLenum format, GLenum type, void* pixels) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && !is_cube_face(target)) {
+  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != kTextureRectangle &&
+      !is_cube_face(target)) {
     return c.set_error(GL_INVALID_ENUM);
   }
   if (level < 0 || level >= target_levels(target)) return c.set_error(GL_INVALID_VALUE);

@@ -78,6 +78,12 @@ void tex_parameter(GlContext& c, GLenum target, GLenum pname, const float* v, bo
   if (!t) return c.set_error(GL_INVALID_ENUM);
   if (!v) return c.set_error(GL_INVALID_VALUE);
   const GLint e = enum_param(v[0], rounded);
+  if (t->target == kTextureRectangle) {  // ARB_texture_rectangle: no repeat, no mipmaps
+    const bool wrap = pname == GL_TEXTURE_WRAP_S || pname == GL_TEXTURE_WRAP_T || pname == GL_TEXTURE_WRAP_R;
+    if (wrap && (e == GL_REPEAT || e == GL_MIRRORED_REPEAT)) return c.set_error(GL_INVALID_ENUM);
+    if (pname == GL_TEXTURE_MIN_FILTER && e != GL_NEAREST && e != GL_LINEAR) return c.set_error(GL_INVALID_ENUM);
+    if (pname == GL_TEXTURE_BASE_LEVEL && e != 0) return c.set_error(GL_INVALID_OPERATION);
+  }
   texture_changing(c, *t);
   Texture& x = t->texture;
   switch (pname) {
@@ -191,10 +197,24 @@ GLint enum_param(float v, bool rounded) {
 }
 
 TextureObject* bound_texture(GlContext& c, GLenum target) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
-    return nullptr;
-  }
+  if (!is_texture_target(target)) return nullptr;
   return c.textures.binding(target).object.get();
+}
+
+bool is_texture_target(GLenum target) {
+  return target == GL_TEXTURE_1D || target == GL_TEXTURE_2D || target == GL_TEXTURE_3D ||
+         target == GL_TEXTURE_CUBE_MAP || target == kTextureRectangle;
+}
+
+void set_texture_target(TextureObject& t, GLenum target) {
+  t.target = target;
+  t.texture.dimensions = texture_dimensions(target);
+  t.texture.cube_map = target == GL_TEXTURE_CUBE_MAP;
+  if (t.texture.cube_map) t.faces.resize(6);
+  if (target == kTextureRectangle) {  // ARB_texture_rectangle's defaults: no mipmaps, clamped
+    t.texture.min_filter = TextureFilter::kLinear;
+    t.texture.wrap_s = t.texture.wrap_t = t.texture.wrap_r = TextureWrap::kClampToEdge;
+  }
 }
 
 TextureObject* image_texture(GlContext& c, GLenum target) {
@@ -271,6 +291,10 @@ const Texture* unit_texture(GlContext& c, std::size_t unit, std::shared_ptr<cons
     if (object) *object = s.binding_cube.object;
     return t;
   }
+  if (s.enabled_rect && s.binding_rect.object && (t = complete_texture(*s.binding_rect.object))) {
+    if (object) *object = s.binding_rect.object;
+    return t;
+  }
   if (s.enabled_3d && s.binding_3d.object && (t = complete_texture(*s.binding_3d.object))) {
     if (object) *object = s.binding_3d.object;
     return t;
@@ -288,6 +312,15 @@ const Texture* unit_texture(GlContext& c, std::size_t unit, std::shared_ptr<cons
 }  // namespace
 
 const Texture* unit_texture(GlContext& c, std::size_t unit) { return unit_texture(c, unit, nullptr); }
+
+glm::vec2 rectangle_scale(GlContext& c, std::size_t unit) {
+  std::shared_ptr<const TextureObject> object;
+  if (!unit_texture(c, unit, &object) || object->target != kTextureRectangle || object->images.empty()) {
+    return glm::vec2(1.0f);
+  }
+  const TexImage& img = object->images[0];
+  return glm::vec2(1.0f / float(std::max(img.width, 1)), 1.0f / float(std::max(img.height, 1)));
+}
 
 unsigned textured_units(GlContext& c) {
   unsigned bits = c.render_mode == GL_FEEDBACK ? 1u : 0u;
@@ -370,9 +403,7 @@ void exec::DeleteTextures(GlContext& c, GLsizei n, const GLuint* textures) {
 
 // A name bound to one target cannot be bound to the other: GL_INVALID_OPERATION.
 void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
-  if (target != GL_TEXTURE_1D && target != GL_TEXTURE_2D && target != GL_TEXTURE_3D && target != GL_TEXTURE_CUBE_MAP) {
-    return c.set_error(GL_INVALID_ENUM);
-  }
+  if (!is_texture_target(target)) return c.set_error(GL_INVALID_ENUM);
   TextureBinding& b = c.textures.binding(target);
   if (texture == 0) {
     b.name = 0;
@@ -382,12 +413,7 @@ void exec::BindTexture(GlContext& c, GLenum target, GLuint texture) {
   std::shared_ptr<TextureObject>& obj = c.textures.names->objects[texture];
   if (!obj) obj = std::make_shared<TextureObject>();
   if (obj->target != 0 && obj->target != target) return c.set_error(GL_INVALID_OPERATION);
-  if (obj->target == 0) {
-    obj->target = target;
-    obj->texture.dimensions = texture_dimensions(target);
-    obj->texture.cube_map = target == GL_TEXTURE_CUBE_MAP;
-    if (obj->texture.cube_map) obj->faces.resize(6);
-  }
+  if (obj->target == 0) set_texture_target(*obj, target);
   b.name = texture;
   b.object = obj;
 }

@@ -12,14 +12,25 @@
 
 namespace shadelab::gl {
 
-/// The object bound to GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP (the
-/// target's default object while name 0 is bound); nullptr for any other target.
+/// The object bound to GL_TEXTURE_1D, GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP or
+/// GL_TEXTURE_RECTANGLE_ARB (the target's default object while name 0 is bound); nullptr for
+/// any other target.
 TextureObject* bound_texture(GlContext& c, GLenum target);
+/// Whether glBindTexture, glEnable and glTexParameter take `target` (bound_texture's targets).
+bool is_texture_target(GLenum target);
+/// Gives a new object its target (at its first binding): its dimensions, a cube map's faces,
+/// a rectangle texture's defaults (GL_LINEAR minification, GL_CLAMP_TO_EDGE).
+void set_texture_target(TextureObject& t, GLenum target);
 
 /// The texture texture unit `unit` applies (GL 1.5 section 3.8.15), or nullptr:
-/// GL_TEXTURE_CUBE_MAP when enabled and complete, else GL_TEXTURE_3D, else GL_TEXTURE_2D, else
-/// GL_TEXTURE_1D (an incomplete texture is as if its target were disabled, as in Mesa).
+/// GL_TEXTURE_CUBE_MAP when enabled and complete, else GL_TEXTURE_RECTANGLE_ARB, else
+/// GL_TEXTURE_3D, else GL_TEXTURE_2D, else GL_TEXTURE_1D (an incomplete texture is as if its
+/// target were disabled, as in Mesa).
 const Texture* unit_texture(GlContext& c, std::size_t unit);
+/// What unit `unit`'s texture coordinates s and t are multiplied by before the pipeline sees
+/// them: 1 / width and 1 / height when the unit applies a rectangle texture (addressed by texel
+/// coordinates, sampled by the pipeline as a 2D texture), else 1.
+glm::vec2 rectangle_scale(GlContext& c, std::size_t unit);
 
 /// Where the images of an image target live: the bound object of GL_TEXTURE_1D, _2D or _3D,
 /// or the face of the bound cube map for a face target (its base and maximum levels and

@@ -73,7 +73,14 @@ struct TexGenCoord {
   glm::vec4 object_plane{0.0f}, eye_plane{0.0f};
 };
 
-/// The core's dimensions of a texture target: 1, 2 or 3 (a cube map's faces: 2).
+/// ARB_texture_rectangle (core in GL 3.1; GL 1.5's headers do not name it): 2D textures of one
+/// level addressed by texel coordinates, s in [0, width] and t in [0, height].
+inline constexpr GLenum kTextureRectangle = 0x84F5;         // GL_TEXTURE_RECTANGLE_ARB
+inline constexpr GLenum kTextureBindingRectangle = 0x84F6;  // GL_TEXTURE_BINDING_RECTANGLE_ARB
+inline constexpr GLenum kProxyTextureRectangle = 0x84F7;    // GL_PROXY_TEXTURE_RECTANGLE_ARB
+inline constexpr GLenum kMaxRectangleTextureSize = 0x84F8;  // GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB
+
+/// The core's dimensions of a texture target: 1, 2 or 3 (a cube map's faces and a rectangle: 2).
 inline int texture_dimensions(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;
 }
@@ -101,7 +108,8 @@ struct TexEnvCombine {
 struct TextureUnitState {
   bool enabled_1d = false, enabled_2d = false, enabled_3d = false;  // GL_TEXTURE_1D, _2D, _3D
   bool enabled_cube = false;                                        // GL_TEXTURE_CUBE_MAP (GL 1.3)
-  TextureBinding binding_1d, binding_2d, binding_3d, binding_cube;
+  bool enabled_rect = false;                                        // GL_TEXTURE_RECTANGLE_ARB
+  TextureBinding binding_1d, binding_2d, binding_3d, binding_cube, binding_rect;
   GLenum env_mode = GL_MODULATE;
   glm::vec4 env_color{0.0f};
   float lod_bias = 0.0f;  // GL_TEXTURE_FILTER_CONTROL's GL_TEXTURE_LOD_BIAS (GL 1.4)
@@ -112,6 +120,7 @@ struct TextureUnitState {
     return target == GL_TEXTURE_1D     ? binding_1d
            : target == GL_TEXTURE_3D   ? binding_3d
            : target == GL_TEXTURE_CUBE_MAP ? binding_cube
+           : target == kTextureRectangle ? binding_rect
                                        : binding_2d;
   }
   const TextureBinding& binding(GLenum target) const { return const_cast<TextureUnitState*>(this)->binding(target); }
@@ -122,7 +131,7 @@ struct TextureState {
   std::array<TextureUnitState, kMaxTextureUnits> units;
   std::size_t active = 0;  // glActiveTexture's unit (GL_ACTIVE_TEXTURE - GL_TEXTURE0)
   // The proxy targets' levels (GL 1.1 section 3.8.1): state only, no texels.
-  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d, proxy_cube;
+  std::vector<TexImage> proxy_1d, proxy_2d, proxy_3d, proxy_cube, proxy_rect;
   std::shared_ptr<TextureNames> names;
 
   /// The active unit, which glBindTexture, glTexEnv, glTexGen, glEnable of a texture target and
