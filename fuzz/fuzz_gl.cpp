@@ -111,6 +111,8 @@ class Input {
         0x84F9u, 0x84FAu, 0x88F0u, 0x88F1u,
         // ARB_texture_rectangle: the target, its binding, its proxy, its maximum size.
         0x84F5u, 0x84F6u, 0x84F7u, 0x84F8u,
+        // ARB_point_sprite: the enable (and glTexEnv target), GL_COORD_REPLACE_ARB.
+        0x8861u, 0x8862u,
         0, 1, 0x1234, 0xFFFFFFFFu, GL_TEXTURE_2D + 1};
     return kEnums[byte() % (sizeof kEnums / sizeof kEnums[0])];
   }

@@ -28,7 +28,7 @@ constexpr GLenum kCapabilities[] = {
     GL_MAP2_TEXTURE_COORD_4, GL_MAP2_VERTEX_3, GL_MAP2_VERTEX_4, GL_NORMALIZE, GL_POINT_SMOOTH,
     GL_POLYGON_OFFSET_FILL, GL_POLYGON_OFFSET_LINE, GL_POLYGON_OFFSET_POINT, GL_POLYGON_SMOOTH,
     GL_POLYGON_STIPPLE, GL_RESCALE_NORMAL, GL_SCISSOR_TEST, GL_STENCIL_TEST, GL_TEXTURE_1D,
-    GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, kTextureRectangle, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
+    GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP, kTextureRectangle, kPointSprite, GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R, GL_TEXTURE_GEN_Q,
     // GL 1.3
     GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
 };
@@ -280,6 +280,8 @@ void restore_point(GlContext& c, const AttribRecord& r) {
   c.prims.point_max = r.prims.point_max;
   c.prims.point_fade = r.prims.point_fade;
   c.prims.point_attenuation = r.prims.point_attenuation;
+  c.prims.point_sprite = r.prims.point_sprite;  // ARB_point_sprite (GL 2.0 table 6.12)
+  c.prims.coord_replace = r.prims.coord_replace;
 }
 
 void restore_polygon(GlContext& c, const AttribRecord& r) {

@@ -178,6 +178,10 @@ struct PrimState {
   // (stored and reported) and the distance attenuation coefficients (a, b, c).
   GLfloat point_min = 0.0f, point_max = kMaxPointSize, point_fade = 1.0f;
   glm::vec3 point_attenuation{1.0f, 0.0f, 0.0f};
+  // ARB_point_sprite: the enable, and each texture unit's GL_COORD_REPLACE_ARB (a bit per unit;
+  // both in the point attribute group, the enable in the enable group too).
+  bool point_sprite = false;
+  std::uint8_t coord_replace = 0;
   GLfloat line_width = 1.0f;
   bool line_smooth = false, line_stipple = false;
   GLushort stipple_pattern = 0xffff;

@@ -131,6 +131,8 @@ FragmentState fragment_state(const GlContext& c) {
   // each point's size and clamps it (never below kMinPointSize). The fade threshold applies to
   // multisampled points only: it changes nothing here (nor in llvmpipe).
   f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
+  f.point.sprite = p.point_sprite;
+  f.point.coord_replace = p.point_sprite ? p.coord_replace : 0;
   f.point.attenuation = p.point_attenuation;
   f.point.min_size = std::max(p.point_min, kMinPointSize);
   f.point.max_size = std::min(p.point_max, kMaxPointSize);

@@ -37,6 +37,7 @@ bool* capability_flag(GlContext& c, GLenum cap) {
     case GL_TEXTURE_3D: return &c.textures.unit().enabled_3d;
     case GL_TEXTURE_CUBE_MAP: return &c.textures.unit().enabled_cube;
     case kTextureRectangle: return &c.textures.unit().enabled_rect;
+    case kPointSprite: return &c.prims.point_sprite;
     case GL_TEXTURE_GEN_S: return &c.textures.unit().gen[0].enabled;
     case GL_TEXTURE_GEN_T: return &c.textures.unit().gen[1].enabled;
     case GL_TEXTURE_GEN_R: return &c.textures.unit().gen[2].enabled;

@@ -120,6 +120,15 @@ bool get_tex_env_combine(const TextureUnitState& u, GLenum pname, float& out) {
 // GL 1.4's GL_TEXTURE_FILTER_CONTROL target holds the unit's GL_TEXTURE_LOD_BIAS, kept as
 // given (section 3.8.8 clamps the sum when sampling).
 void tex_env(GlContext& c, GLenum target, GLenum pname, const float* v) {
+  if (target == kPointSprite) {  // ARB_point_sprite: the active unit's coordinate replacement
+    if (pname != kCoordReplace) return c.set_error(GL_INVALID_ENUM);
+    if (!v) return c.set_error(GL_INVALID_VALUE);
+    const GLint on = enum_param(v[0], false);
+    if (on != GL_TRUE && on != GL_FALSE) return c.set_error(GL_INVALID_VALUE);
+    const auto bit = std::uint8_t(1u << c.textures.active);
+    c.prims.coord_replace = std::uint8_t(on ? c.prims.coord_replace | bit : c.prims.coord_replace & ~bit);
+    return;
+  }
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
     if (!v) return c.set_error(GL_INVALID_VALUE);
@@ -150,6 +159,9 @@ void get_tex_env(GlContext& c, GLenum target, GLenum pname, T* params) {
   if (target == GL_TEXTURE_FILTER_CONTROL) {
     if (pname != GL_TEXTURE_LOD_BIAS) return c.set_error(GL_INVALID_ENUM);
     v[0] = c.textures.unit().lod_bias;
+  } else if (target == kPointSprite) {
+    if (pname != kCoordReplace) return c.set_error(GL_INVALID_ENUM);
+    v[0] = (c.prims.coord_replace >> c.textures.active & 1u) ? 1.0f : 0.0f;
   } else if (target != GL_TEXTURE_ENV) {
     return c.set_error(GL_INVALID_ENUM);
   } else if (pname == GL_TEXTURE_ENV_COLOR) {

@@ -80,6 +80,11 @@ inline constexpr GLenum kTextureBindingRectangle = 0x84F6;  // GL_TEXTURE_BINDIN
 inline constexpr GLenum kProxyTextureRectangle = 0x84F7;    // GL_PROXY_TEXTURE_RECTANGLE_ARB
 inline constexpr GLenum kMaxRectangleTextureSize = 0x84F8;  // GL_MAX_RECTANGLE_TEXTURE_SIZE_ARB
 
+/// ARB_point_sprite (core in GL 2.0): the enable (also glTexEnv's target) and glTexEnv's
+/// GL_COORD_REPLACE_ARB.
+inline constexpr GLenum kPointSprite = 0x8861;   // GL_POINT_SPRITE_ARB
+inline constexpr GLenum kCoordReplace = 0x8862;  // GL_COORD_REPLACE_ARB
+
 /// The core's dimensions of a texture target: 1, 2 or 3 (a cube map's faces and a rectangle: 2).
 inline int texture_dimensions(GLenum target) {
   return target == GL_TEXTURE_1D ? 1 : target == GL_TEXTURE_3D ? 3 : 2;

@@ -132,6 +132,13 @@ struct PointState {
   /// clamped to [min_size, max_size] (GL 1.4 section 3.3, in Mesa's order of operations).
   glm::vec3 attenuation{1.0f, 0.0f, 0.0f};
   float min_size = 0.0f, max_size = 255.0f;  ///< pixels
+  /// GL_POINT_SPRITE_ARB (ARB_point_sprite, core in GL 2.0): each point is a square of side
+  /// `size` (not rounded, never smooth) rasterized as two triangles, and the texture units whose
+  /// bit is set in `coord_replace` (GL_COORD_REPLACE_ARB) take (s, t, 0, 1) across it instead of
+  /// the vertex's coordinates: s from 0 at its left edge to 1 at its right, t from 0 at its top
+  /// to 1 at its bottom (the upper-left origin).
+  bool sprite = false;
+  std::uint8_t coord_replace = 0;
   bool attenuated() const { return attenuation != glm::vec3(1.0f, 0.0f, 0.0f); }
 };
 
