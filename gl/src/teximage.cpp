@@ -124,6 +124,33 @@ RgbaImage unpack(const GlContext& c, int row_pixels, int rows, int skip_x, int s
   return image;
 }
 
+// unpack, then store_texels at (x0, y0, z0): a 1D or 2D image band by band (64 rows at a time,
+// on the pipeline's threads when there are several bands), so that a large image is never held
+// whole as floats (a 16384 x 16384 one would take 4 GiB).
+void store_client_image(GlContext& c, int row_pixels, int rows, int skip_x, int skip_y, int skip_z, int width,
+                        int height, int depth, bool three_d, GLenum format, GLenum type, const void* pixels, int x0,
+                        int y0, int z0, TexImage& img, TextureLevel& core) {
+  if (three_d) {
+    const RgbaImage image = unpack(c, row_pixels, rows, skip_x, skip_y, skip_z, width, height, depth, true, format, type,
+                                   pixels);
+    return store_texels(image, x0, y0, z0, img, core);
+  }
+  constexpr int kBand = 64;
+  const std::size_t bands = std::size_t((height + kBand - 1) / kBand);
+  auto store = [&](std::size_t first, std::size_t end) {  // bands [first, end): disjoint rows
+    for (std::size_t b = first; b < end; ++b) {
+      const int r = int(b) * kBand, h = std::min(kBand, height - r);
+      const RgbaImage image = unpack(c, row_pixels, rows, skip_x, skip_y + r, skip_z, width, h, 1, false, format, type,
+                                     pixels);
+      store_texels(image, x0, y0 + r, z0, img, core);
+    }
+  };
+  if (bands < 4) return store(0, bands);
+  make_pipeline(c);
+  if (c.pipeline) c.pipeline->parallel_for(bands, 1, store);
+  else store(0, bands);
+}
+
 // The usual upload, an 8-bit RGB(A) or BGR(A) image into a level of 8-bit components with no
 // pixel transfer, copied byte for byte (rows of RGBA into RGBA at memcpy speed) instead of
 // through floats: the texels the general path stores (an unsigned byte reads back exactly;
@@ -233,9 +260,8 @@ void tex_image(GlContext& c, int dims, GLenum target, GLint level, GLint interna
   copy.skip_z = strip_images ? 1 : 0, copy.width = inner_w, copy.height = inner_h, copy.depth = inner_d;
   copy.three_d = dims == 3;
   if (pixels && !store_bytes(c, copy, format, type, pixels, img, core)) {
-    RgbaImage image = unpack(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h,
-                             inner_d, dims == 3, format, type, pixels);
-    store_texels(image, 0, 0, 0, img, core);
+    store_client_image(c, width, height, border, strip_rows ? 1 : 0, strip_images ? 1 : 0, inner_w, inner_h, inner_d,
+                       dims == 3, format, type, pixels, 0, 0, 0, img, core);
   }
   image_changed(c, target, t, level);
 }
@@ -270,8 +296,8 @@ void tex_sub_image(GlContext& c, int dims, GLenum target, GLint level, GLint x, 
   copy.row_pixels = width, copy.rows = height, copy.width = width, copy.height = height, copy.depth = depth;
   copy.x0 = x, copy.y0 = y, copy.z0 = z, copy.three_d = dims == 3;
   if (!store_bytes(c, copy, format, type, pixels, img, core)) {
-    RgbaImage image = unpack(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels);
-    store_texels(image, x, y, z, img, core);
+    store_client_image(c, width, height, 0, 0, 0, width, height, depth, dims == 3, format, type, pixels, x, y, z, img,
+                       core);
   }
   image_changed(c, target, t, level);
 }

@@ -107,4 +107,47 @@ TEST_F(TextureUploadTest, CopiedBytesAreTheTexelsOfTheGeneralPath) {
   }
 }
 
+// Images of many rows go through floats band by band, the bands on the pipeline's threads
+// (teximage.cpp's store_client_image): a 300-row float image, with a border and under unpack
+// skips, into 16-bit and 8-bit levels, must store what the same rows store uploaded one at a
+// time (one band each, on the calling thread).
+TEST_F(TextureUploadTest, ManyRowsInBandsStoreWhatSingleRowsStore) {
+  constexpr int kW = 37, kH = 300;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(-0.1f, 1.1f);
+  std::vector<float> image(std::size_t(kW + 3) * std::size_t(kH + 4) * 4);
+  for (float& v : image) v = unit(random);
+  for (GLint internal : {GL_RGBA16, GL_RGBA8, GL_LUMINANCE12_ALPHA4}) {
+    GLuint tex[2];
+    glGenTextures(2, tex);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, kW + 3);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 1);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 2);
+    glBindTexture(GL_TEXTURE_2D, tex[0]);
+    glTexImage2D(GL_TEXTURE_2D, 0, internal, kW, kH, 1, GL_RGBA, GL_FLOAT, image.data());
+    const std::vector<std::uint8_t> banded = read_back(GL_TEXTURE_2D, kW - 2, kH - 2, 1);
+    glBindTexture(GL_TEXTURE_2D, tex[1]);
+    glTexImage2D(GL_TEXTURE_2D, 0, internal, kW - 2, kH - 2, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 2);  // the border's column skipped by hand
+    for (int y = 0; y < kH - 2; ++y) {
+      glPixelStorei(GL_UNPACK_SKIP_ROWS, 3 + y);  // and its row
+      glTexSubImage2D(GL_TEXTURE_2D, 0, 0, y, kW - 2, 1, GL_RGBA, GL_FLOAT, image.data());
+    }
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    glPixelStorei(GL_UNPACK_SKIP_PIXELS, 0);
+    glPixelStorei(GL_UNPACK_SKIP_ROWS, 0);
+    const std::vector<std::uint8_t> rows = read_back(GL_TEXTURE_2D, kW - 2, kH - 2, 1);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR)) << internal;
+    EXPECT_EQ(banded, rows) << internal;
+    std::vector<std::uint16_t> wide[2];
+    for (int k = 0; k < 2; ++k) {  // the 16-bit values too
+      glBindTexture(GL_TEXTURE_2D, tex[k]);
+      wide[k].resize(std::size_t(kW - 2) * std::size_t(kH - 2) * 4);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT, wide[k].data());
+    }
+    EXPECT_EQ(wide[0], wide[1]) << internal;
+    glDeleteTextures(2, tex);
+  }
+}
+
 }  // namespace
