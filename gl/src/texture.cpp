@@ -314,6 +314,7 @@ const Texture* unit_texture(GlContext& c, std::size_t unit, std::shared_ptr<cons
 const Texture* unit_texture(GlContext& c, std::size_t unit) { return unit_texture(c, unit, nullptr); }
 
 glm::vec2 rectangle_scale(GlContext& c, std::size_t unit) {
+  if (!c.textures.units[unit].enabled_rect) return glm::vec2(1.0f);  // most draws: no lookup
   std::shared_ptr<const TextureObject> object;
   if (!unit_texture(c, unit, &object) || object->target != kTextureRectangle || object->images.empty()) {
     return glm::vec2(1.0f);
