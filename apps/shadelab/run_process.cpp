@@ -54,7 +54,7 @@ void let_output_out(int socket_fd) {
   if (write(socket_fd, &last, 1) != 1) return;
   pollfd p{socket_fd, POLLIN, 0};
   char done = 0;
-  if (poll(&p, 1, 1000) > 0 && read(socket_fd, &done, 1) == 1) return;
+  if (poll(&p, 1, 1000) > 0) [[maybe_unused]] const ssize_t got = read(socket_fd, &done, 1);
 }
 
 // Ends a process group: SIGTERM, then SIGKILL if it lingers; reaps `leader` if still there.
