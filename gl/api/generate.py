@@ -42,6 +42,12 @@ class Tables:
         cfg = self.config
         self.api = registry.load(registry_path, cfg["features"], cfg.get("extra_enums", []),
                                  cfg.get("khronos_types", {}))
+        # The listed extensions' own commands (none of them an alias of a core command) are
+        # implemented by hand like core ones.
+        for x in cfg.get("extensions", {}).get("names", []):
+            if x not in self.api.extensions:
+                raise SystemExit(f"generate: config.toml: {x} is not an extension of the registry")
+            self.api.add_extension_commands(x)
         self.pending, self.pending_features = read_pending(pending_path, {c.name for c in self.api.commands},
                                                            {name for name, _ in self.api.features})
         self.implemented = [c for c in self.api.commands if c.name not in self.pending]
@@ -165,7 +171,7 @@ extern "C" {{
     # macro is undefined; this header defines the macros, so it declares the types as well.
     out.append("")
     out += [f"typedef {c.ret} (APIENTRYP PFN{c.name.upper()}PROC)({c.param_list()});"
-            for c in api.commands if c.version not in ("1.0", "1.1")]
+            for c in api.commands if c.version not in ("1.0", "1.1", "ext")]
     out.append("""
 #ifdef __cplusplus
 }
@@ -398,7 +404,8 @@ def coverage_md(t: Tables, programs: Path) -> str:
         users = [name for name, names in calls.items() if c.name in names]
         called += bool(users)
         status = "pending" if c.name in t.pending else "implemented"
-        rows.append(f"| `{c.name}` | {c.version} | {status} | {', '.join(users)} |")
+        version = c.feature.removeprefix("GL_") if c.version == "ext" else c.version
+        rows.append(f"| `{c.name}` | {version} | {status} | {', '.join(users)} |")
     totals = []
     for _, num in t.api.features:
         cmds = [c for c in t.api.commands if c.version == num]

@@ -60,6 +60,20 @@ class Api:
     features: list[tuple[str, str]] = field(default_factory=list)  # (name, number)
     aliases: dict[str, str] = field(default_factory=dict)  # extension command -> core command
     extensions: dict[str, Extension] = field(default_factory=dict)  # every gl extension, by name
+    protos: dict[str, tuple[str, list[Param]]] = field(default_factory=dict)  # every command's signature
+
+    def add_extension_commands(self, extension: str) -> list[Command]:
+        """The commands of `extension` that alias no other command (its own, with signatures of
+        their own: glVertexPointerEXT's count), added to the API's commands with the
+        extension's name as their feature and "ext" as their version."""
+        added = []
+        for name in self.extensions[extension].commands:
+            if name in self.aliases or any(c.name == name for c in self.commands):
+                continue
+            ret, params = self.protos[name]
+            added.append(Command(name, ret, params, extension, "ext"))
+        self.commands += added
+        return added
 
     def command(self, name: str) -> Command:
         for c in self.commands:
@@ -117,6 +131,7 @@ def load(path: str, features: list[str], extra_enums: list[str], khronos: dict[s
 
     api = Api([], [], [])
     api.aliases = aliases
+    api.protos = protos
     for x in root.find("extensions").findall("extension"):
         if "gl" not in (x.get("supported") or "").split("|"):
             continue
