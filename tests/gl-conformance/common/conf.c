@@ -138,6 +138,15 @@ void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows) {
   glViewport(col * w, c->height - (row + 1) * h, w, h);
 }
 
+void conf_pixel_panel(const ConfContext* c, int col, int row, int ncols, int nrows) {
+  conf_panel(c, col, row, ncols, nrows);
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, c->width / ncols, 0, c->height / nrows, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+}
+
 static void sphere_vertex(float r, int i, int j, int slices, int stacks) {
   double theta = 2.0 * CONF_PI * i / slices; /* around y */
   double phi = CONF_PI * j / stacks;         /* from the north pole */

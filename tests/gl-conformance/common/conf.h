@@ -40,6 +40,9 @@ int conf_write_png(const char* path, const unsigned char* rgba, int width, int h
 /* Sets the viewport to cell (col, row) of an ncols x nrows grid over the whole buffer;
  * row 0 is the top row. Cell sizes are width / ncols and height / nrows (integer division). */
 void conf_panel(const ConfContext* c, int col, int row, int ncols, int nrows);
+/* conf_panel, with an orthographic projection in the cell's pixels (x from 0 to the cell's
+ * width, y from 0 to its height, z from -1 to 1) and an identity modelview matrix. */
+void conf_pixel_panel(const ConfContext* c, int col, int row, int ncols, int nrows);
 
 /* Opens the text file beside the output PNG (its path with ".png" replaced by ".txt") for a
  * program whose values are compared with Mesa's one by one (tools/gl_values.cpp: a line per

@@ -33,15 +33,6 @@ static void make_image(void) {
   }
 }
 
-static void cell(const ConfContext* c, int col, int row) {
-  conf_panel(c, col, row, 4, 4);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 64, 0, 64, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 static void rect(float x0, float y0, float x1, float y1, float z) {
   glBegin(GL_QUADS);
   glVertex3f(x0, y0, z), glVertex3f(x1, y0, z), glVertex3f(x1, y1, z), glVertex3f(x0, y1, z);
@@ -128,7 +119,7 @@ int main(int argc, char** argv) {
   glEnable(GL_SCISSOR_TEST);
 
   /* Cell (0, 0): the image drawn at (8, 8), then revealed. */
-  cell(&c, 0, 0);
+  conf_pixel_panel(&c, 0, 0, 4, 4);
   glScissor(0, 192, 64, 64);
   clear_cell();
   glRasterPos2i(8, 8);
@@ -139,7 +130,7 @@ int main(int argc, char** argv) {
 
   /* Cell (1, 0): zoomed 3 x 2, under a scissor box, with stencil write mask 0xe0; the depth
    * test on (the image's depths go in whatever the depth test says, as Mesa writes them). */
-  cell(&c, 1, 0);
+  conf_pixel_panel(&c, 1, 0, 4, 4);
   glScissor(64, 192, 64, 64);
   clear_cell();
   glScissor(64, 192, 40, 50);
@@ -158,7 +149,7 @@ int main(int argc, char** argv) {
   reveal();
 
   /* Cell (2, 0): the depth mask off: stencil written, depth kept. */
-  cell(&c, 2, 0);
+  conf_pixel_panel(&c, 2, 0, 4, 4);
   glScissor(128, 192, 64, 64);
   clear_cell();
   glDepthMask(GL_FALSE);
@@ -171,7 +162,7 @@ int main(int argc, char** argv) {
   /* Cell (3, 0): read back through the depth scale and bias and the stencil shift and offset.
    * (Drawn through them, the image would differ: Mesa's glDrawPixels of GL_DEPTH_STENCIL
    * leaves the transfer operations out, where shadelab applies them as GL asks.) */
-  cell(&c, 3, 0);
+  conf_pixel_panel(&c, 3, 0, 4, 4);
   glScissor(192, 192, 64, 64);
   clear_cell();
   glRasterPos2i(30, 6);
@@ -188,7 +179,7 @@ int main(int argc, char** argv) {
   reveal();
 
   /* Cell (0, 1): glCopyPixels of depth and stencil from cell (0, 0), flipped by zoom -1. */
-  cell(&c, 0, 1);
+  conf_pixel_panel(&c, 0, 1, 4, 4);
   glScissor(0, 128, 64, 64);
   clear_cell();
   glRasterPos2i(8, 40);
@@ -200,7 +191,7 @@ int main(int argc, char** argv) {
   reveal();
 
   /* Cell (1, 1): a copy with stencil write mask 0x30 over a stencil of 0x0f. */
-  cell(&c, 1, 1);
+  conf_pixel_panel(&c, 1, 1, 4, 4);
   glScissor(64, 128, 64, 64);
   glClearStencil(0x0f);
   glClearDepth(1.0);
@@ -254,13 +245,13 @@ int main(int argc, char** argv) {
   conf_values(&c, "depths of row 5", v, 6);
   glEnable(GL_TEXTURE_2D);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-  cell(&c, 2, 1);
+  conf_pixel_panel(&c, 2, 1, 4, 4);
   glScissor(128, 128, 64, 64);
   glClear(GL_COLOR_BUFFER_BIT);
   textured_quad(8, 56);
 
   /* Compared against r: r rises along the quad's x (GL_LEQUAL: lit where r <= depth). */
-  cell(&c, 3, 1);
+  conf_pixel_panel(&c, 3, 1, 4, 4);
   glScissor(192, 128, 64, 64);
   glClear(GL_COLOR_BUFFER_BIT);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
@@ -284,7 +275,7 @@ int main(int argc, char** argv) {
   glGetTexImage(GL_TEXTURE_2D, 0, GL_DEPTH_STENCIL_EXT, GL_UNSIGNED_INT_24_8_EXT, texels);
   for (int i = 0; i < 6; ++i) picked[i] = texels[(1 + 2 * i) * 32 + 2 + 2 * i];
   packed_values(&c, "sub-copied texels", picked, 6);
-  cell(&c, 0, 2);
+  conf_pixel_panel(&c, 0, 2, 4, 4);
   glScissor(0, 64, 64, 64);
   glClear(GL_COLOR_BUFFER_BIT);
   textured_quad(0, 64);

@@ -16,15 +16,6 @@
 #define GL_COORD_REPLACE_ARB 0x8862
 #endif
 
-static void cell(const ConfContext* c, int col, int row) {
-  conf_panel(c, col, row, 4, 4);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 64, 0, 64, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 static void point(float x, float y, float size) {
   glPointSize(size);
   glBegin(GL_POINTS);
@@ -80,19 +71,19 @@ int main(int argc, char** argv) {
   glEnable(GL_POINT_SPRITE_ARB);
   glTexEnvi(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, GL_TRUE);
   conf_error(&c, "TexEnv coord replace");
-  cell(&c, 0, 0);
+  conf_pixel_panel(&c, 0, 0, 4, 4);
   sizes();
-  cell(&c, 1, 0);
+  conf_pixel_panel(&c, 1, 0, 4, 4);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   sizes();
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  cell(&c, 2, 0);
+  conf_pixel_panel(&c, 2, 0, 4, 4);
   glDisable(GL_POINT_SPRITE_ARB);
   sizes();
   /* Sprites on, replacement off: squares of the vertex's texel. */
-  cell(&c, 3, 0);
+  conf_pixel_panel(&c, 3, 0, 4, 4);
   glEnable(GL_POINT_SPRITE_ARB);
   glTexEnvi(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, GL_FALSE);
   sizes();
@@ -100,14 +91,14 @@ int main(int argc, char** argv) {
 
   /* Row 1: smooth points with sprites on (squares), modulated by a smooth colour; two units,
    * unit 1 replaced and unit 0 not. */
-  cell(&c, 0, 1);
+  conf_pixel_panel(&c, 0, 1, 4, 4);
   glEnable(GL_POINT_SMOOTH);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   sizes();
   glDisable(GL_BLEND);
   glDisable(GL_POINT_SMOOTH);
-  cell(&c, 1, 1);
+  conf_pixel_panel(&c, 1, 1, 4, 4);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   glPointSize(24.0f);
   glBegin(GL_POINTS);
@@ -129,7 +120,7 @@ int main(int argc, char** argv) {
   glActiveTexture(GL_TEXTURE0);
   glTexEnvi(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, GL_FALSE);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-  cell(&c, 2, 1);
+  conf_pixel_panel(&c, 2, 1, 4, 4);
   glMultiTexCoord2f(GL_TEXTURE0, 0.8f, 0.2f);
   sizes();
   glGetTexEnviv(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, &n);
@@ -143,7 +134,7 @@ int main(int argc, char** argv) {
   glTexEnvi(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, GL_TRUE);
 
   /* Distance-attenuated sprites along a receding row, under a perspective. */
-  cell(&c, 3, 1);
+  conf_pixel_panel(&c, 3, 1, 4, 4);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glFrustum(-1, 1, -1, 1, 1, 20);
@@ -169,16 +160,16 @@ int main(int argc, char** argv) {
   glEndList();
   glDisable(GL_POINT_SPRITE_ARB);
   glTexEnvi(GL_POINT_SPRITE_ARB, GL_COORD_REPLACE_ARB, GL_FALSE);
-  cell(&c, 0, 2);
+  conf_pixel_panel(&c, 0, 2, 4, 4);
   glCallList(list);
   /* A sprite across the viewport's right edge, and a plain wide point there. */
-  cell(&c, 1, 2);
+  conf_pixel_panel(&c, 1, 2, 4, 4);
   point(58.25f, 44.25f, 24.0f);
   glDisable(GL_POINT_SPRITE_ARB);
   point(58.25f, 14.25f, 24.0f);
   glEnable(GL_POINT_SPRITE_ARB);
   /* The same under a perspective, across the left and bottom edges. */
-  cell(&c, 2, 2);
+  conf_pixel_panel(&c, 2, 2, 4, 4);
   glMatrixMode(GL_PROJECTION);
   glLoadIdentity();
   glFrustum(-1, 1, -1, 1, 1, 20);

@@ -35,15 +35,6 @@ static void make_image(void) {
   }
 }
 
-static void cell(const ConfContext* c, int col, int row) {
-  conf_panel(c, col, row, 4, 4);
-  glMatrixMode(GL_PROJECTION);
-  glLoadIdentity();
-  glOrtho(0, 64, 0, 64, -1, 1);
-  glMatrixMode(GL_MODELVIEW);
-  glLoadIdentity();
-}
-
 /* A quad from (x0, y0) to (x1, y1) with texture coordinates (s0, t0) to (s1, t1). */
 static void quad(float x0, float y0, float x1, float y1, float s0, float t0, float s1, float t1) {
   glBegin(GL_QUADS);
@@ -105,17 +96,17 @@ int main(int argc, char** argv) {
 
   /* Row 0: nearest (texels 2 x 4 pixels: edges between pixel centres), linear magnified 2.5x,
    * linear at one texel a pixel, a part of the image stretched. */
-  cell(&c, 0, 0);
+  conf_pixel_panel(&c, 0, 0, 4, 4);
   filter(GL_NEAREST);
   quad(8, 8, 56, 48, 0, 0, kW, kH);
-  cell(&c, 1, 0);
+  conf_pixel_panel(&c, 1, 0, 4, 4);
   filter(GL_LINEAR);
   quad(2, 2, 62, 27, 0, 0, kW, kH);
   quad(20, 40, 20 + kW, 40 + kH, 0, 0, kW, kH);
-  cell(&c, 2, 0);
+  conf_pixel_panel(&c, 2, 0, 4, 4);
   quad(4, 4, 60, 60, 5.5f, 2.25f, 17.5f, 8.75f);
   /* Past the edges: s from -6 to 30, t from -4 to 14. */
-  cell(&c, 3, 0);
+  conf_pixel_panel(&c, 3, 0, 4, 4);
   filter(GL_NEAREST);
   wrap(GL_CLAMP_TO_EDGE);
   quad(2, 2, 38, 20, -6, -4, 30, 14);
@@ -130,7 +121,7 @@ int main(int argc, char** argv) {
 
   /* Row 1: a texture matrix in texels (scaled and translated), modulation by the colour, a
    * rectangle on unit 1 modulating a 2D checker on unit 0. */
-  cell(&c, 0, 1);
+  conf_pixel_panel(&c, 0, 1, 4, 4);
   glMatrixMode(GL_TEXTURE);
   glLoadIdentity();
   glTranslatef(12, 5, 0);
@@ -140,7 +131,7 @@ int main(int argc, char** argv) {
   glMatrixMode(GL_TEXTURE);
   glLoadIdentity();
   glMatrixMode(GL_MODELVIEW);
-  cell(&c, 1, 1);
+  conf_pixel_panel(&c, 1, 1, 4, 4);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
   glBegin(GL_QUADS);
   glColor3f(1, 1, 1), glTexCoord2f(0, 0), glVertex2f(4, 4);
@@ -162,7 +153,7 @@ int main(int argc, char** argv) {
   glBindTexture(GL_TEXTURE_RECTANGLE_ARB, tex[0]);
   glEnable(GL_TEXTURE_RECTANGLE_ARB);
   glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-  cell(&c, 2, 1);
+  conf_pixel_panel(&c, 2, 1, 4, 4);
   glBegin(GL_QUADS);
   glMultiTexCoord2f(GL_TEXTURE0, 0, 0), glMultiTexCoord2f(GL_TEXTURE1, 0, 0), glVertex2f(8, 8);
   glMultiTexCoord2f(GL_TEXTURE0, 1, 0), glMultiTexCoord2f(GL_TEXTURE1, kW, 0), glVertex2f(56, 8);
@@ -175,7 +166,7 @@ int main(int argc, char** argv) {
   /* Precedence: with 2D and rectangle enabled the rectangle is drawn; an empty rectangle
    * texture gives way to 2D. */
   glEnable(GL_TEXTURE_RECTANGLE_ARB);
-  cell(&c, 3, 1);
+  conf_pixel_panel(&c, 3, 1, 4, 4);
   filter(GL_NEAREST);
   glBegin(GL_QUADS);
   glTexCoord2f(0, 0), glVertex2f(4, 4);
@@ -189,7 +180,7 @@ int main(int argc, char** argv) {
   glBindTexture(GL_TEXTURE_RECTANGLE_ARB, tex[0]);
 
   /* Row 2: glDrawPixels and glBitmap textured at the raster position's coordinates (texels). */
-  cell(&c, 0, 2);
+  conf_pixel_panel(&c, 0, 2, 4, 4);
   glTexCoord2f(6, 3);
   glRasterPos2i(4, 4);
   static unsigned char gray[20 * 12 * 4];
@@ -207,7 +198,7 @@ int main(int argc, char** argv) {
   conf_values(&c, "raster texture coordinates", v, 4);
 
   /* glTexSubImage2D, glCopyTexImage2D and glCopyTexSubImage2D. */
-  cell(&c, 1, 2);
+  conf_pixel_panel(&c, 1, 2, 4, 4);
   glTexSubImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, 4, 2, 8, 4, GL_RGBA, GL_UNSIGNED_BYTE, image);
   conf_error(&c, "TexSubImage2D rectangle");
   quad(8, 8, 56, 48, 0, 0, kW, kH);
@@ -217,7 +208,7 @@ int main(int argc, char** argv) {
   conf_error(&c, "CopyTexImage2D rectangle");
   glCopyTexSubImage2D(GL_TEXTURE_RECTANGLE_ARB, 0, 0, 0, 72, 180, 10, 10);
   conf_error(&c, "CopyTexSubImage2D rectangle");
-  cell(&c, 2, 2);
+  conf_pixel_panel(&c, 2, 2, 4, 4);
   quad(2, 2, 62, 42, 0, 0, 30, 20);
   static unsigned char back[30 * 20 * 4];
   glGetTexImage(GL_TEXTURE_RECTANGLE_ARB, 0, GL_RGBA, GL_UNSIGNED_BYTE, back);
@@ -235,7 +226,7 @@ int main(int argc, char** argv) {
   quad(4, 4, 52, 44, 0, 0, kW / 2, kH);
   glEndList();
   memset(image, 0, sizeof image); /* the list keeps its own copy */
-  cell(&c, 3, 2);
+  conf_pixel_panel(&c, 3, 2, 4, 4);
   glCallList(list);
 
   /* The enable and the binding through the attribute stack; the cube map over the rectangle. */
@@ -256,7 +247,7 @@ int main(int argc, char** argv) {
   }
   glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glEnable(GL_TEXTURE_CUBE_MAP);
-  cell(&c, 0, 3);
+  conf_pixel_panel(&c, 0, 3, 4, 4);
   glBegin(GL_QUADS);
   glTexCoord3f(1, 0, 0), glVertex2f(4, 4);
   glTexCoord3f(1, 0, 0), glVertex2f(28, 4);
