@@ -247,31 +247,29 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
   p.polygon = false;
   p.provoking = provoking;
   p.coverage = Coverage{};
-  if (frag_.point.sprite) {
-    // A point sprite: the square of side `size` around the point, its texture coordinates
-    // replaced where asked (window y grows downward here: t is 0 at the top).
-    const float r = 0.5f * size;
+  if (frag_.point.sprite || frag_.point.smooth) {
+    // A square around the point: a sprite's side is its size; Mesa's smooth point has radius 1
+    // up to size 2, else size / 2, and discards the fragments beyond the radius.
+    const bool sprite = frag_.point.sprite;
+    const float r = sprite || size > 2.0f ? 0.5f * size : 1.0f;
     const float sx[4] = {-r, r, r, -r}, sy[4] = {-r, -r, r, r};
     for (int k = 0; k < 4; ++k) {
       copy_vertex(p.corner[k], v, double(v.win.x + sx[k]), gl_y(v.win.y + sy[k], fb_height_));
-      for (std::size_t u = 0; u < kMaxTextureUnits; ++u) {
+      // The sprite's replaced texture coordinates (window y grows downward here: t is 0 at the top).
+      for (std::size_t u = 0; sprite && u < kMaxTextureUnits; ++u) {
         if (!(frag_.point.coord_replace >> u & 1u)) continue;
         float* tc = &p.corner[k].attr[std::size_t(kTexCoord) + 4 * u];
         tc[0] = sx[k] < 0.0f ? 0.0f : 1.0f, tc[1] = sy[k] < 0.0f ? 0.0f : 1.0f, tc[2] = 0.0f, tc[3] = 1.0f;
       }
     }
-  } else if (frag_.point.smooth) {
-    // Mesa's smooth point: a square of radius 1 up to size 2, else size / 2, discarding
-    // fragments beyond the radius.
-    const float r = size <= 2.0f ? 1.0f : 0.5f * size;
-    const float sx[4] = {-r, r, r, -r}, sy[4] = {-r, -r, r, r};
-    for (int k = 0; k < 4; ++k) copy_vertex(p.corner[k], v, double(v.win.x + sx[k]), gl_y(v.win.y + sy[k], fb_height_));
-    float k = 1.0f / r;
-    k = 1.0f - 2.0f * k + k * k;
-    p.coverage.kind = Coverage::Kind::kPoint;
-    p.coverage.a = k;
-    affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, 1.0f, 1.0f, p.coverage.u0, p.coverage.ux, p.coverage.uy);
-    affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, -1.0f, 1.0f, p.coverage.v0, p.coverage.vx, p.coverage.vy);
+    if (!sprite) {
+      float k = 1.0f / r;
+      k = 1.0f - 2.0f * k + k * k;
+      p.coverage.kind = Coverage::Kind::kPoint;
+      p.coverage.a = k;
+      affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, 1.0f, 1.0f, p.coverage.u0, p.coverage.ux, p.coverage.uy);
+      affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, -1.0f, 1.0f, p.coverage.v0, p.coverage.vx, p.coverage.vy);
+    }
   } else {
     RasterQuad q;
     if (!point_quad(v.win, size, fb_height_, q)) return;
