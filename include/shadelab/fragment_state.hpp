@@ -171,6 +171,9 @@ struct FragmentState {
   float offset_factor = 0.0f, offset_units = 0.0f;
   ScissorState scissor;
   AlphaTestState alpha_test;
+  /// GL_SAMPLE_ALPHA_TO_ONE (GL 1.5 section 4.1.3): the alpha of a fragment that passed the
+  /// alpha test is 1 from there on (blending, the logic op and the colour written).
+  bool alpha_one = false;
   LogicOpState logic_op;
   PolygonStipple stipple;
   PolygonMode front_mode = PolygonMode::kFill, back_mode = PolygonMode::kFill;

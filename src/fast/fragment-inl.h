@@ -466,6 +466,7 @@ HWY_INLINE void write_colors(const DrawJob& job, const Rgba& color, unsigned liv
   const DUB dub;
   const FragmentState& fs = *job.frag;
   Rgba out = clamped(color);
+  if (fs.alpha_one) out.c[3] = hn::Set(DB(), 1.0f);
   if (fs.logic_op.enabled) {  // instead of blending, on the 8-bit values
     const hn::Vec<DUB> old = load_rows(DU(), rows);
     const hn::Vec<DUB> keep = hn::Set(dub, mask_word(fs));

@@ -40,7 +40,7 @@ void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, 
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled || f.alpha_one) {
     return BlockKernel::kGeneral;
   }
   if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||

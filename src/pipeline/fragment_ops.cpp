@@ -183,6 +183,7 @@ glm::vec4 blend(const BlendState& b, const glm::vec4& constant, const glm::vec4&
 }
 
 void write_color(Framebuffer& fb, std::size_t i, glm::vec4 src, const FragmentState& state) {
+  if (state.alpha_one) src.a = 1.0f;
   for (int c = 0; c < 4; ++c) src[c] = unit(src[c]);
   std::uint8_t* px = &fb.color[i * 4];
   if (state.logic_op.enabled) {  // on the 8-bit values, instead of blending (GL 1.1 4.1.7)
