@@ -1,5 +1,5 @@
 // Sequences of GL calls: the input bytes are decoded into libshadelab-gl calls on a 32x32
-// OSMesa context, with arbitrary enums (valid and not), values (NaN, infinities, huge,
+// OSMesa context (with a multisample buffer for a quarter of the seeds), with arbitrary enums (valid and not), values (NaN, infinities, huge,
 // negative), calls between glBegin and glEnd or outside, in any order, compiled into display
 // lists or not (lists calling lists, themselves, glCallLists over up to 65,536 names), evaluator
 // maps of every order and the meshes they draw. Only what OpenGL cannot defend against is kept
@@ -91,6 +91,8 @@ class Input {
         GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
         GL_INCR_WRAP, GL_DECR_WRAP, GL_SAMPLES_PASSED, GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE,
         GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY,
+        // GL 1.3's multisample enables.
+        GL_MULTISAMPLE, GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE, GL_SAMPLE_COVERAGE,
         // GL 1.2-1.4 texture state: wrap modes, LOD clamps and bias, level range, generation.
         GL_CLAMP_TO_EDGE, GL_CLAMP_TO_BORDER, GL_MIRRORED_REPEAT, GL_TEXTURE_WRAP_R,
         GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
@@ -190,7 +192,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 0; i < sizeof b->list_names; ++i) b->list_names[i] = std::uint8_t(i % 11 == 0 ? seed : i % 7);
   for (std::size_t i = 0; i < 65536; ++i) b->many_names[i] = GLuint(i < 4 ? 1 + (seed + i) % 9 : 1000 + i);
   ListCalls list_calls;
-  OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, seed % 2 ? 16 : 0, nullptr);
+  // An accumulation buffer with odd seeds, a multisample buffer (4 samples) with one seed in 4.
+  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_ACCUM_BITS, seed % 2 ? 16 : 0,
+                            OSMESA_SAMPLES_SHADELAB, seed % 4 == 3 ? 4 : 0, 0};
+  OSMesaContext ctx = OSMesaCreateContextAttribs(attributes, nullptr);
   if (!ctx) return 0;
   if (!OSMesaMakeCurrent(ctx, b->color.data(), GL_UNSIGNED_BYTE, kSize, kSize)) {
     OSMesaDestroyContext(ctx);
@@ -282,7 +287,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 26: glStencilFunc(in.any_enum(), in.small(-2, 300), GLuint(in.byte())); break;
       case 27: glStencilOp(in.any_enum(), in.any_enum(), in.any_enum()); break;
       case 28: glShadeModel(in.any_enum()); break;
-      case 29:  // polygon offset, sample coverage (GL 1.3: no multisample buffer), compressed images
+      case 29:  // polygon offset, sample coverage (GL 1.3), compressed images
         switch (in.byte() % 4) {
           case 0: glSampleCoverage(in.number(), GLboolean(in.byte() % 3)); break;
           case 1:

@@ -176,8 +176,8 @@ bool draw_array_mesh(GlContext& c, GLenum mode, bool per_vertex_color, bool from
   in.triangles = triangles;
   capture_draw(c, shade, in, l.enabled, {});
   for_each_draw_buffer(c, [&](bool first) {
-    draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in,
-                   first ? query_counts(c) : nullptr, c.pipeline.get());
+    draw_triangles(c.fb, sample_projection(c, projection), c.raster.viewport, fragment_state(c), shade, in,
+                   pass_counts(c, first), c.pipeline.get());
     // Without the pipeline's tiles, the whole viewport is marked, not the bounds of every vertex.
     const Viewport& vp = c.raster.viewport;
     if (c.pipeline) mark_drawn(c);

@@ -194,14 +194,34 @@ struct PrimState {
   bool unfilled() const { return front_mode != GL_FILL || back_mode != GL_FILL; }
 };
 
-/// Multisampling (GL 1.3; GL 1.5 section 3.2.1): the enables and glSampleCoverage's values,
-/// kept and reported. shadelab's visuals have no multisample buffer (GL_SAMPLE_BUFFERS 0), so
-/// none of it changes a pixel.
+/// Multisampling (GL 1.3; GL 1.5 section 3.2.1): the enables and glSampleCoverage's values.
+/// They change pixels only in a context whose visual has a multisample buffer (SampleBuffers).
 struct MultisampleState {
   bool enabled = true;  // GL_MULTISAMPLE
   bool alpha_to_coverage = false, alpha_to_one = false, coverage = false;
   float coverage_value = 1.0f;  // clamped to [0, 1]
   bool coverage_invert = false;
+};
+
+/// The multisample buffer of a visual with samples (GL 1.5 sections 3.2.1 and 4.1.10;
+/// multisample.cpp): a colour, depth and stencil value per sample. Sample 0's depth and
+/// stencil are the framebuffer's own (what glReadPixels reads); every sample's colour, and the
+/// other samples' depth and stencil, are here. Drawing draws each sample in turn: its buffers
+/// are exchanged into `fb` (`active`) and the primitive is drawn with its geometry shifted so
+/// that the sample's position in each pixel falls on the pixel's centre; the colour buffer
+/// (fb.color) holds the resolved colours, the samples' mean, brought up to date for the tiles
+/// drawn since (`unresolved`) before anything reads it (settle_clears, present).
+struct SampleBuffers {
+  int count = 0;  ///< GL_SAMPLES of the visual; 0: no multisample buffer
+  int width = 0, height = 0;  ///< the framebuffer size the buffers were made for
+  std::vector<ColorBuffer> color;                  ///< per sample
+  std::vector<std::vector<float>> depth;           ///< samples 1 to count - 1
+  std::vector<std::vector<std::uint8_t>> stencil;  ///< samples 1 to count - 1
+  std::vector<std::uint8_t> unresolved;            ///< per tile of the tile map
+  bool any_unresolved = false;
+  int active = -1;  ///< the sample whose buffers are in fb, -1 for none
+  glm::vec2 shift{0.0f};  ///< the window-space shift of the active sample's geometry
+  std::vector<int> list;  ///< scratch: the tiles a resolve visits
 };
 
 /// The caller's colour buffer (OSMesaMakeCurrent) and how it is laid out.
@@ -378,6 +398,7 @@ struct GlContext {
   /// front buffer is then the surface's image, what was last shown).
   ColorBuffer other_color;
   bool front_in_fb = false;
+  SampleBuffers ms;  ///< the multisample buffer, when the visual has samples
 
   /// A context with OpenGL's initial state; it shares texture objects and display lists
   /// with `share` when there is one (OSMesa's sharelist, GLX's share context).
@@ -472,8 +493,9 @@ void for_listed_tiles(GlContext& c, const Fn& fn) {
 }
 
 /// Sets what the context's visual gives it (buffers.cpp): a double-buffered colour buffer
-/// (GL_DRAW_BUFFER and GL_READ_BUFFER start as GL_BACK) and accumulation bits per channel.
-void configure_buffers(GlContext& c, bool double_buffered, int accum_bits);
+/// (GL_DRAW_BUFFER and GL_READ_BUFFER start as GL_BACK), accumulation bits per channel and
+/// samples per pixel (0: no multisample buffer).
+void configure_buffers(GlContext& c, bool double_buffered, int accum_bits, int samples = 0);
 /// Whether drawing writes colour (GL_DRAW_BUFFER is not GL_NONE).
 bool draws_color(const GlContext& c);
 /// Puts the colour buffer GL_DRAW_BUFFER names into fb.color (the back one when it names both)
@@ -501,11 +523,61 @@ struct DepthStencilCopy {
 };
 DepthStencilCopy save_depth_stencil(GlContext& c);
 void restore_depth_stencil(GlContext& c, DepthStencilCopy& saved);
+/// Multisampling (multisample.cpp). Exchanges sample k's buffers into fb, for a pass that
+/// draws that sample (the waiting draws finished first); leave_sample puts them back.
+void enter_sample(GlContext& c, int k);
+void leave_sample(GlContext& c);
+/// The samples a primitive may cover: all of them, less those glSampleCoverage's mask leaves
+/// out when GL_SAMPLE_COVERAGE is on (a bit per sample).
+unsigned sample_mask(const GlContext& c);
+/// A sample pass's fragment state with GL_MULTISAMPLE on: smooth points and lines drawn as
+/// multisampled ones, and GL_SAMPLE_ALPHA_TO_COVERAGE's test of the fragment's alpha.
+void sample_fragment_state(const GlContext& c, FragmentState& f);
+/// `projection` followed by the active sample pass's shift (unchanged outside a pass).
+glm::mat4 sample_projection(const GlContext& c, const glm::mat4& projection);
+/// Brings the resolved colours of the tiles drawn since the last resolve up to date (nothing
+/// during a sample pass or without a multisample buffer). settle_clears and present call it.
+void resolve_samples(GlContext& c);
+/// After the samples were drawn into both colour buffers' multisample buffer: resolves into
+/// the front one as well as into fb.color.
+void resolve_into_both_buffers(GlContext& c);
+/// The occlusion-query counts a pass of a drawing adds to: the first pass's, and every
+/// sample's (GL 1.5 section 4.1.6: samples are counted where there is a multisample buffer).
+inline RenderStats* pass_counts(GlContext& c, bool first) {
+  return first || c.ms.active >= 0 ? query_counts(c) : nullptr;
+}
+/// Runs fn() once with each sample's buffers in fb (once, with fb's own, without a multisample
+/// buffer): writes that bypass rasterization (stencil and depth images) reach every sample.
+template <class Fn>
+void for_each_sample_buffer(GlContext& c, const Fn& fn) {
+  if (c.ms.count == 0) return fn();
+  for (int k = 0; k < c.ms.count; ++k) {
+    enter_sample(c, k);
+    fn();
+    leave_sample(c);
+  }
+}
+
 /// Runs draw(first) once for each colour buffer GL_DRAW_BUFFER names: once (true) into
 /// fb.color; with both buffers named, a second time (false: occlusion queries and the frame
 /// capture have counted it already) into the front buffer, from the same depth and stencil.
+/// With a multisample buffer, once per sample the coverage mask leaves in (first: the first
+/// of them), then resolved into the colour buffers named.
 template <class Draw>
 void for_each_draw_buffer(GlContext& c, const Draw& draw) {
+  if (c.ms.count > 0) {
+    const unsigned mask = sample_mask(c);
+    bool first = true;
+    for (int k = 0; k < c.ms.count; ++k) {
+      if (!(mask >> k & 1u)) continue;
+      enter_sample(c, k);
+      draw(first);
+      leave_sample(c);
+      first = false;
+    }
+    if (draws_both_buffers(c)) resolve_into_both_buffers(c);
+    return;
+  }
   if (!draws_both_buffers(c)) return draw(true);
   DepthStencilCopy saved = save_depth_stencil(c);
   draw(true);

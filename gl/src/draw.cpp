@@ -312,8 +312,8 @@ void draw_vertices(GlContext& c, std::uint32_t count, bool last_part) {
   const auto stipple_counter = p.stipple_counter;  // each buffer's lines start the pattern alike
   for_each_draw_buffer(c, [&](bool first) {
     if (!first) p.stipple_counter = stipple_counter;
-    draw_triangles(c.fb, projection, c.raster.viewport, fragment_state(c), shade, in,
-                   first ? query_counts(c) : nullptr, c.pipeline.get());
+    draw_triangles(c.fb, sample_projection(c, projection), c.raster.viewport, fragment_state(c), shade, in,
+                   pass_counts(c, first), c.pipeline.get());
     if (c.pipeline) mark_drawn(c);
     else mark_batch(c, projection, batch.s.positions, prim_margin(c));
   });

@@ -144,6 +144,7 @@ FragmentState fragment_state(const GlContext& c) {
     f.clip.eye[std::size_t(i)] = p.clip_planes[std::size_t(i)];
     if (p.clip_enabled[std::size_t(i)]) f.clip.enabled |= std::uint8_t(1u << i);
   }
+  if (c.ms.active >= 0 && c.multisample.enabled) sample_fragment_state(c, f);
   return f;
 }
 
@@ -174,7 +175,7 @@ void draw_rectangle(GlContext& c, const FragmentRect& given) {
   }
   make_pipeline(c);
   for_each_draw_buffer(c, [&](bool first) {
-    draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, first ? query_counts(c) : nullptr,
+    draw_fragments(c.fb, rectangle_fragment_state(c), rectangle_shade_state(c), rect, pass_counts(c, first),
                    c.pipeline.get());
     mark_dirty(c, rect.x, rect.y, rect.x + rect.width, rect.y + rect.height);
   });

@@ -67,12 +67,8 @@ ZoomedSpan zoomed_span(int start, int n, float zoom, int limit) {
   return z;
 }
 
-// A stencil image written through the write mask and the scissor box: the pixel ownership
-// and scissor tests and nothing else apply (section 4.3.1; llvmpipe draws it with the
-// scissor on and every other test off). A GL_DEPTH_STENCIL image (depths too) writes its
-// depths the same way, through the depth write mask, and no colour (as llvmpipe draws it:
-// depth test always passing, colour writes off).
-void write_stencil(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
+// write_stencil into the buffers in fb.
+void write_stencil_buffer(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
   settle_clears(c);
   const std::uint8_t mask = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
   const bool depths = !img.depths.empty() && c.raster.depth_mask;
@@ -92,6 +88,15 @@ void write_stencil(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, co
     }
   }
   if (depths) mark_dirty(c, x0, y0, x1, y1);  // no longer known to hold the cleared depth
+}
+
+// A stencil image written through the write mask and the scissor box: the pixel ownership
+// and scissor tests and nothing else apply (section 4.3.1; llvmpipe draws it with the
+// scissor on and every other test off). A GL_DEPTH_STENCIL image (depths too) writes its
+// depths the same way, through the depth write mask, and no colour (as llvmpipe draws it:
+// depth test always passing, colour writes off).
+void write_stencil(GlContext& c, const PixelImage& img, const ZoomedSpan& xs, const ZoomedSpan& ys) {
+  for_each_sample_buffer(c, [&] { write_stencil_buffer(c, img, xs, ys); });
 }
 
 // The zoomed image's fragments with their colours (or the raster colour and their depths)
@@ -221,7 +226,7 @@ bool draw_bytes(GlContext& c, int x, int y, int width, int height, GLenum format
   for (bool m : r.color_mask) {
     if (!m) return false;
   }
-  if (textured_units(c) != 0 || query_counts(c) != nullptr) return false;
+  if (textured_units(c) != 0 || query_counts(c) != nullptr || c.ms.count > 0) return false;
   int x0 = 0, y0 = 0, x1 = c.fb.width, y1 = c.fb.height;
   scissor_box(c, x0, y0, x1, y1);  // unchanged when every pixel passes
   x0 = std::max<long long>(x0, x), y0 = std::max<long long>(y0, y);

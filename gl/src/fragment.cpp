@@ -148,14 +148,14 @@ void clear_stencil(GlContext& c) {
 
 // A clear inside the scissor box (GL 1.1 section 4.2.3: the clear honours the pixel
 // ownership and scissor tests and the write masks): the box's pixels written at once, after
-// the waiting draws and clears, and its tiles marked changed (no longer known cleared).
-void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y0, int x1, int y1) {
+// the waiting draws and clears, and its tiles marked changed (no longer known cleared); depth
+// to `d`.
+void clear_box_to(GlContext& c, bool color, bool depth, bool stencil, int x0, int y0, int x1, int y1, float d) {
   make_pipeline(c);
   settle_clears(c);
   if (x0 >= x1 || y0 >= y1) return;
   const std::array<std::uint8_t, 4> px = Framebuffer::color_bytes(c.raster.clear_color);
   const auto& mask = c.raster.color_mask;
-  const float d = std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f);
   const std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
   const std::uint8_t s = std::uint8_t(c.raster.clear_stencil & 0xff);
   auto rows = [&](std::size_t begin, std::size_t end) {
@@ -174,6 +174,28 @@ void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y
   if (c.pipeline && area >= (1u << 16)) c.pipeline->parallel_for(std::size_t(y1 - y0), 16, [&](std::size_t b, std::size_t e) { rows(std::size_t(y0) + b, std::size_t(y0) + e); });
   else rows(std::size_t(y0), std::size_t(y1));
   mark_dirty(c, x0, y0, x1, y1);
+}
+
+void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y0, int x1, int y1) {
+  clear_box_to(c, color, depth, stencil, x0, y0, x1, y1, std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f));
+}
+
+// Every sample of the multisample buffer cleared as the colour buffer and sample 0's depth
+// and stencil (the framebuffer's) were: the same box, values and write masks.
+void clear_samples(GlContext& c, GLbitfield mask, bool scissored, int x0, int y0, int x1, int y1) {
+  const bool color = (mask & GL_COLOR_BUFFER_BIT) && draws_color(c);
+  const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0;
+  const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0;
+  if (!color && !depth && !stencil) return;
+  // The depth sample 0 holds: the box's clamped value, or the whole buffer's stored one.
+  const float d = scissored ? std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f) : c.tiles.clear_depth;
+  if (!scissored) x0 = y0 = 0, x1 = c.fb.width, y1 = c.fb.height;
+  make_pipeline(c);
+  for (int k = 0; k < c.ms.count; ++k) {
+    enter_sample(c, k);
+    clear_box_to(c, color, depth && k > 0, stencil && k > 0, x0, y0, x1, y1, d);
+    leave_sample(c);
+  }
 }
 
 }  // namespace
@@ -222,6 +244,7 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
               (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
               (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);
     if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
+    if (c.ms.count > 0) clear_samples(c, mask, true, x0, y0, x1, y1);
     return;
   }
   c.tiles.ahead.clear();
@@ -231,6 +254,7 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
   }
   if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
+  if (c.ms.count > 0) clear_samples(c, mask, false, 0, 0, 0, 0);
   // Started last: the clears above would wait for it.
   if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
 }

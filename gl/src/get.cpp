@@ -219,10 +219,11 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_INDEX_MODE: case GL_STEREO: out = make(Kind::kBool, {0}); return true;
     case GL_DOUBLEBUFFER: out = make(Kind::kBool, {double(c.double_buffered)}); return true;
     case GL_RENDER_MODE: out = ints({double(c.render_mode)}); return true;
-    // Multisampling (GL 1.3): no multisample buffer.
+    // Multisampling (GL 1.3): the visual's multisample buffer, if it has one.
     case GL_SAMPLE_COVERAGE_VALUE: out = make(Kind::kFloat, {c.multisample.coverage_value}); return true;
     case GL_SAMPLE_COVERAGE_INVERT: out = make(Kind::kBool, {double(c.multisample.coverage_invert)}); return true;
-    case GL_SAMPLE_BUFFERS: case GL_SAMPLES: out = ints({0}); return true;
+    case GL_SAMPLE_BUFFERS: out = ints({c.ms.count > 0 ? 1.0 : 0.0}); return true;
+    case GL_SAMPLES: out = ints({double(c.ms.count)}); return true;
     // Selection and feedback (GL 1.1 table 6.31).
     case GL_FEEDBACK_BUFFER_SIZE: out = ints({double(c.feedback.size)}); return true;
     case GL_FEEDBACK_BUFFER_TYPE: out = ints({double(c.feedback.type)}); return true;

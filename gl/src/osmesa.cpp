@@ -28,13 +28,13 @@ void choose_bits(GLint depth, GLint stencil, int& depth_bits, int& stencil_bits)
   else depth_bits = 0;
 }
 
-OSMesaContext create(GLenum format, GLint depth, GLint stencil, GLint accum, OSMesaContext share) {
+OSMesaContext create(GLenum format, GLint depth, GLint stencil, GLint accum, OSMesaContext share, int samples = 0) {
   if (!supported_format(format)) return nullptr;
   int depth_bits = 0, stencil_bits = 0;
   choose_bits(depth, stencil, depth_bits, stencil_bits);
   try {
     auto* c = new osmesa_context(format, depth_bits, stencil_bits, share);
-    configure_buffers(*c, false, accum);  // an OSMesa buffer is single-buffered
+    configure_buffers(*c, false, accum, samples);  // an OSMesa buffer is single-buffered
     return c;
   } catch (...) {
     return nullptr;
@@ -71,7 +71,7 @@ OSMesaContext GLAPIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits, 
 // Attributes as Mesa reads them; only OpenGL 1.x compatibility contexts can be had.
 OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMesaContext sharelist) {
   GLenum format = OSMESA_RGBA;
-  GLint depth = 24, stencil = 8, accum = 0;
+  GLint depth = 24, stencil = 8, accum = 0, samples = 0;
   for (int i = 0; attribList && i < 64 && attribList[i] != 0; i += 2) {
     int value = attribList[i + 1];
     switch (attribList[i]) {
@@ -82,10 +82,14 @@ OSMesaContext GLAPIENTRY OSMesaCreateContextAttribs(const int* attribList, OSMes
       case OSMESA_PROFILE: if (value != OSMESA_COMPAT_PROFILE) return nullptr; break;
       case OSMESA_CONTEXT_MAJOR_VERSION: if (value > 1) return nullptr; break;
       case OSMESA_CONTEXT_MINOR_VERSION: break;
+      case OSMESA_SAMPLES_SHADELAB:  // as GLX and EGL choose: at least as many, here 4
+        if (value < 0 || value > 4) return nullptr;
+        samples = value > 0 ? 4 : 0;
+        break;
       default: return nullptr;
     }
   }
-  return create(format, depth, stencil, accum, sharelist);
+  return create(format, depth, stencil, accum, sharelist, samples);
 }
 
 void GLAPIENTRY OSMesaDestroyContext(OSMesaContext ctx) {

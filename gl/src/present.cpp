@@ -67,7 +67,21 @@ void make_pipeline(GlContext& c) {
 
 void settle_clears(GlContext& c) {
   if (c.pipeline) c.pipeline->apply_pending_clears(c.fb);
+  resolve_samples(c);
 }
+
+namespace {
+
+// A multisample pass's tiles: their resolved colour is to be brought up to date.
+void mark_unresolved(GlContext& c, int tile) {
+  SampleBuffers& s = c.ms;
+  if (s.active < 0) return;
+  if (s.unresolved.size() != c.tiles.flags.size()) s.unresolved.assign(c.tiles.flags.size(), 0);
+  s.unresolved[std::size_t(tile)] = 1;
+  s.any_unresolved = true;
+}
+
+}  // namespace
 
 void reset_tiles(GlContext& c) {
   constexpr int kSize = PipelineContext::kTileSize;
@@ -75,6 +89,11 @@ void reset_tiles(GlContext& c) {
   m.columns = (c.fb.width + kSize - 1) / kSize;
   m.flags.assign(std::size_t(m.columns) * std::size_t((c.fb.height + kSize - 1) / kSize), 0);
   if (c.pipeline) c.pipeline->pending_clears().tiles.assign(m.flags.size(), 0);
+  // A new or resized framebuffer: the multisample buffer is made again from it at first use.
+  SampleBuffers& s = c.ms;
+  s.color.clear(), s.depth.clear(), s.stencil.clear(), s.unresolved.clear();
+  s.width = s.height = 0;
+  s.any_unresolved = false;
 }
 
 void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1) {
@@ -85,14 +104,18 @@ void mark_dirty(GlContext& c, int x0, int y0, int x1, int y1) {
   TileMap& m = c.tiles;
   for (int ty = y0 / kSize; ty <= (y1 - 1) / kSize; ++ty) {
     for (int tx = x0 / kSize; tx <= (x1 - 1) / kSize; ++tx) {
-      std::uint8_t& f = m.flags[std::size_t(ty) * std::size_t(m.columns) + std::size_t(tx)];
-      f = TileMap::kChanged;  // and no longer known cleared
+      const int t = ty * m.columns + tx;
+      m.flags[std::size_t(t)] = TileMap::kChanged;  // and no longer known cleared
+      mark_unresolved(c, t);
     }
   }
 }
 
 void mark_drawn(GlContext& c) {
-  for (int t : c.pipeline->last_draw_tiles()) c.tiles.flags[std::size_t(t)] = TileMap::kChanged;
+  for (int t : c.pipeline->last_draw_tiles()) {
+    c.tiles.flags[std::size_t(t)] = TileMap::kChanged;
+    mark_unresolved(c, t);
+  }
 }
 
 void mark_all_changed(GlContext& c) {
@@ -102,6 +125,7 @@ void mark_all_changed(GlContext& c) {
 void present(GlContext& c) {
   const UserBuffer& u = c.user;
   if (!u.data) return;
+  resolve_samples(c);
   TileMap& m = c.tiles;
   if (c.fb.color.attached()) {
     // The caller's buffer is the colour buffer: what was drawn is there; colour clears still

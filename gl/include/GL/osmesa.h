@@ -44,6 +44,9 @@ extern "C" {
 #define OSMESA_COMPAT_PROFILE 0x35
 #define OSMESA_CONTEXT_MAJOR_VERSION 0x36
 #define OSMESA_CONTEXT_MINOR_VERSION 0x37
+/* shadelab's own (Mesa's OSMesa has none): samples per pixel of a multisample buffer; 0 (the
+ * default) for none, 1 to 4 for 4 samples (the one count shadelab has), more: no context. */
+#define OSMESA_SAMPLES_SHADELAB 0x5301
 
 typedef struct osmesa_context* OSMesaContext;
 typedef void (*OSMESAproc)();

@@ -23,6 +23,7 @@ struct SurfaceConfig {
   int stencil_bits = 8;
   int accum_bits = 0;  ///< per channel
   bool double_buffered = true;
+  int samples = 0;  ///< per pixel in the multisample buffer; 0: none
 };
 
 /// Where the pixels of a surface's image go: byte positions of R, G, B (and A, or -1) in a
