@@ -1,6 +1,7 @@
 // EGL configurations (EGL 1.5 section 3.4): eglGetConfigs, eglChooseConfig (the matching
 // criteria and sort order of table 3.4), eglGetConfigAttrib. shadelab's configurations draw
-// pbuffers with OpenGL: RGBA 8/8/8/8; depth/stencil 24/8, 24/0, 16/0 or none. No surfaces here.
+// pbuffers with OpenGL: RGBA 8/8/8/8; depth/stencil 24/8, 24/0, 16/0 or none, and 24/8 with 4
+// samples. No surfaces here.
 #include <algorithm>
 
 #include "gl/egl/egl_vendor.hpp"
@@ -73,7 +74,8 @@ bool matches(const Request& r, const Config& c) {
     if (!at_least(r.color[i], 8)) return false;
   }
   if (!at_least(r.buffer, 32) || !at_least(r.depth, c.surface.depth_bits) ||
-      !at_least(r.stencil, c.surface.stencil_bits) || !at_least(r.samples, 0) || !at_least(r.sample_buffers, 0) ||
+      !at_least(r.stencil, c.surface.stencil_bits) || !at_least(r.samples, c.surface.samples) ||
+      !at_least(r.sample_buffers, c.surface.samples > 0 ? 1 : 0) ||
       !at_least(r.luminance, 0) || !at_least(r.alpha_mask, 0) || !exactly(r.level, 0)) {
     return false;
   }
@@ -87,9 +89,10 @@ bool matches(const Request& r, const Config& c) {
          exactly(r.min_swap, 0) && exactly(r.max_swap, 1);
 }
 
-// Table 3.4's sort: the colour sizes are all equal here; then smaller depth, smaller stencil,
-// and smaller EGL_CONFIG_ID.
+// Table 3.4's sort: the colour sizes are all equal here; then fewer samples (EGL_SAMPLE_BUFFERS
+// and EGL_SAMPLES), smaller depth, smaller stencil, and smaller EGL_CONFIG_ID.
 bool better(const Config* a, const Config* b) {
+  if (a->surface.samples != b->surface.samples) return a->surface.samples < b->surface.samples;
   if (a->surface.depth_bits != b->surface.depth_bits) return a->surface.depth_bits < b->surface.depth_bits;
   if (a->surface.stencil_bits != b->surface.stencil_bits) return a->surface.stencil_bits < b->surface.stencil_bits;
   return a->id < b->id;
@@ -130,8 +133,9 @@ bool config_attribute(const Config& c, EGLint attribute, EGLint& value) {
     case EGL_BUFFER_SIZE: value = 32; return true;
     case EGL_DEPTH_SIZE: value = c.surface.depth_bits; return true;
     case EGL_STENCIL_SIZE: value = c.surface.stencil_bits; return true;
-    case EGL_LUMINANCE_SIZE: case EGL_ALPHA_MASK_SIZE: case EGL_SAMPLES: case EGL_SAMPLE_BUFFERS:
-    case EGL_LEVEL: case EGL_NATIVE_VISUAL_ID: case EGL_TRANSPARENT_RED_VALUE:
+    case EGL_SAMPLES: value = c.surface.samples; return true;
+    case EGL_SAMPLE_BUFFERS: value = c.surface.samples > 0 ? 1 : 0; return true;
+    case EGL_LUMINANCE_SIZE: case EGL_ALPHA_MASK_SIZE: case EGL_LEVEL: case EGL_NATIVE_VISUAL_ID: case EGL_TRANSPARENT_RED_VALUE:
     case EGL_TRANSPARENT_GREEN_VALUE: case EGL_TRANSPARENT_BLUE_VALUE: case EGL_MIN_SWAP_INTERVAL:
       value = 0; return true;
     case EGL_MAX_SWAP_INTERVAL: value = 1; return true;

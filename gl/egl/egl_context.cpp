@@ -113,7 +113,7 @@ EGLContext create_context(EGLDisplay dpy, EGLConfig config, EGLContext share, co
   c->major = a.major;
   c->gl = std::make_unique<GlContext>(GLenum(GL_RGBA), cfg->surface.depth_bits, cfg->surface.stencil_bits,
                                       shared ? shared->gl.get() : nullptr);
-  configure_buffers(*c->gl, cfg->surface.double_buffered, cfg->surface.accum_bits);
+  configure_buffers(*c->gl, cfg->surface.double_buffered, cfg->surface.accum_bits, cfg->surface.samples);
   int major = 1, minor = 0;
   implemented_version(major, minor);
   // EGL_KHR_create_context: a version the configuration cannot provide is EGL_BAD_MATCH.

@@ -24,15 +24,15 @@ constexpr const char* kExtensions =
     "EGL_KHR_create_context EGL_KHR_get_all_proc_addresses EGL_KHR_no_config_context "
     "EGL_KHR_surfaceless_context";
 
-// The configurations: depth/stencil 24/8, 24/0, 16/0, none; each with a 16-bit accumulation
-// buffer (EGL has no attribute for it; GL programs that accumulate get one), drawn to pbuffers
-// or to nothing.
+// The configurations: depth/stencil 24/8, 24/0, 16/0, none, then 24/8 with a multisample
+// buffer of 4 samples; each with a 16-bit accumulation buffer (EGL has no attribute for it; GL
+// programs that accumulate get one), drawn to pbuffers or to nothing.
 void make_configs(Display& d) {
-  const int depth_stencil[][2] = {{24, 8}, {24, 0}, {16, 0}, {0, 0}};
-  for (auto [depth, stencil] : depth_stencil) {
+  const int kinds[][3] = {{24, 8, 0}, {24, 0, 0}, {16, 0, 0}, {0, 0, 0}, {24, 8, 4}};
+  for (auto [depth, stencil, samples] : kinds) {
     auto c = std::make_unique<Config>();
     c->id = EGLint(d.configs.size()) + 1;
-    c->surface = {depth, stencil, 16, true};
+    c->surface = {depth, stencil, 16, true, samples};
     d.configs.push_back(std::move(c));
   }
 }

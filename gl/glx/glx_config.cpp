@@ -115,14 +115,17 @@ bool matches(const Request& r, const FbConfig& c) {
   if (!exactly(r.x_renderable, True) || !exactly(r.visual_type, GLX_TRUE_COLOR)) return false;
   if (!exactly(r.caveat, GLX_NONE) || !exactly(r.visual_id, int(c.visual.visualid))) return false;
   if (r.transparent != kDontCare && r.transparent != GLX_NONE) return false;
-  return at_least(r.sample_buffers, 0) && at_least(r.samples, 0) && r.sample_buffers <= 0 && r.samples <= 0;
+  // Minimums, as Mesa matches them (src/glx/glxcmds.c fbconfigs_compatible).
+  return at_least(r.sample_buffers, c.surface.samples > 0 ? 1 : 0) && at_least(r.samples, c.surface.samples);
 }
 
-// Mesa's order (src/glx/glxcmds.c fbconfig_compare): single-buffered first; for depth and
-// accumulation "larger, but none first"; stencil smaller; then the list's own order.
+// Mesa's order (src/glx/glxcmds.c fbconfig_compare): single-buffered first; fewer samples;
+// for depth and accumulation "larger, but none first"; stencil smaller; then the list's own
+// order.
 bool better(const FbConfig* a, const FbConfig* b) {
   const platform::SurfaceConfig &x = a->surface, &y = b->surface;
   if (x.double_buffered != y.double_buffered) return !x.double_buffered;
+  if (x.samples != y.samples) return x.samples < y.samples;
   auto larger_or_zero = [](int p, int q, bool& decided) {
     decided = p != q;
     return p == 0 || (q != 0 && p > q);

@@ -122,7 +122,7 @@ GLXContext create_context(Display* dpy, const FbConfig* config, GLXContext share
   const platform::SurfaceConfig& s = config->surface;
   c->gl = std::make_unique<GlContext>(GLenum(GL_RGBA), s.depth_bits, s.stencil_bits,
                                       shared ? shared->gl.get() : nullptr);
-  configure_buffers(*c->gl, s.double_buffered, s.accum_bits);
+  configure_buffers(*c->gl, s.double_buffered, s.accum_bits, s.samples);
   int major = 1, minor = 0;
   implemented_version(major, minor);
   if (a.major > major || (a.major == major && a.minor > minor)) {

@@ -92,7 +92,9 @@ std::vector<std::pair<XVisualInfo, platform::ImageLayout>> usable_visuals(Displa
 
 // The configurations of a screen: double- and single-buffered; 24 bits of depth with 8 of
 // stencil, 24, 16 or no depth; with and without a 16-bit accumulation buffer (the variety
-// llvmpipe offers, so that glXChooseFBConfig picks alike), the richest first. Each takes a
+// llvmpipe offers, so that glXChooseFBConfig picks alike), the richest first; then the
+// double- and single-buffered ones with 24 bits of depth and 8 of stencil again, with a
+// multisample buffer of 4 samples (llvmpipe's count), without and with accumulation. Each takes a
 // visual of its own when the server has enough (Xvfb's GLX extension makes hundreds), so that
 // glXGetConfig on a window's visual is unambiguous; otherwise they share the first (then the
 // visual stands for glXChooseVisual's last choice, as in Mesa's Xlib driver).
@@ -114,6 +116,18 @@ std::vector<std::unique_ptr<FbConfig>> make_configs(Display* dpy, int screen) {
         c->drawable_types = GLX_WINDOW_BIT | GLX_PBUFFER_BIT | (doubled ? 0 : GLX_PIXMAP_BIT);
         out.push_back(std::move(c));
       }
+    }
+  }
+  for (bool doubled : {true, false}) {
+    for (int accum : {0, 16}) {
+      auto c = std::make_unique<FbConfig>();
+      const std::size_t k = out.size();
+      c->id = int(k) + 1 + screen * 1000;
+      c->screen = screen;
+      std::tie(c->visual, c->layout) = visuals[k < visuals.size() ? k : 0];
+      c->surface = {24, 8, accum, doubled, 4};
+      c->drawable_types = GLX_WINDOW_BIT | GLX_PBUFFER_BIT | (doubled ? 0 : GLX_PIXMAP_BIT);
+      out.push_back(std::move(c));
     }
   }
   if (visuals.size() < out.size()) {
@@ -183,9 +197,11 @@ const FbConfig* config_for_visual(DisplayState& d, const XVisualInfo* visual) {
   for (const auto& c : screen_configs(d, visual->screen)) {
     if (c->visual.visualid != visual->visualid) continue;
     const platform::SurfaceConfig& s = c->surface;
-    // The richest: double-buffered, then the most depth, stencil and accumulation bits.
+    // The richest: double-buffered, then the most depth, stencil and accumulation bits; a
+    // multisample buffer last (a visual of its own is never shared with one without).
     auto rank = [](const platform::SurfaceConfig& x) {
-      return (x.double_buffered ? 1 << 20 : 0) + x.depth_bits * 1024 + x.stencil_bits * 32 + x.accum_bits;
+      return (x.double_buffered ? 1 << 20 : 0) + x.depth_bits * 1024 + x.stencil_bits * 32 + x.accum_bits -
+             (x.samples > 0 ? 1 << 21 : 0);
     };
     if (!best || rank(s) > rank(best->surface)) best = c.get();
   }
@@ -214,7 +230,8 @@ bool config_attribute(const FbConfig& c, int attribute, int& value) {
     case GLX_TRANSPARENT_BLUE_VALUE: case GLX_TRANSPARENT_ALPHA_VALUE: value = 0; return true;
     case GLX_MAX_PBUFFER_WIDTH: case GLX_MAX_PBUFFER_HEIGHT: value = kMaxBufferDim; return true;
     case GLX_MAX_PBUFFER_PIXELS: value = kMaxBufferDim * kMaxBufferDim; return true;
-    case GLX_SAMPLE_BUFFERS: case GLX_SAMPLES: value = 0; return true;
+    case GLX_SAMPLE_BUFFERS: value = s.samples > 0 ? 1 : 0; return true;
+    case GLX_SAMPLES: value = s.samples; return true;
     case GLX_SCREEN: value = c.screen; return true;
     default: return false;
   }

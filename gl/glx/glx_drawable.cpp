@@ -116,7 +116,7 @@ GLXPixmap create_glx_pixmap(Display* dpy, XVisualInfo* visual, Pixmap pixmap) {
     for (const auto& c : screen_configs(*d, config->screen)) {
       platform::SurfaceConfig a = c->surface, b = config->surface;
       if (!a.double_buffered && a.depth_bits == b.depth_bits && a.stencil_bits == b.stencil_bits &&
-          a.accum_bits == b.accum_bits) {
+          a.accum_bits == b.accum_bits && a.samples == b.samples) {
         config = c.get();
         break;
       }

@@ -84,6 +84,104 @@ static void pbuffers_and_contexts(void) {
   eglDestroySurface(dpy, pb);
 }
 
+static unsigned red_at(int x, int y) { return (unsigned)(pixel(x, y) >> 16); }
+
+static void rect(float x0, float y0, float x1, float y1) {
+  glBegin(GL_QUADS);
+  glVertex2f(x0, y0), glVertex2f(x1, y0), glVertex2f(x1, y1), glVertex2f(x0, y1);
+  glEnd();
+}
+
+/* A 4-sample configuration: coverage counted in samples (a white rectangle over black leaves
+   255 * covered / 4 in an edge pixel), GL_MULTISAMPLE off, glSampleCoverage, alpha to coverage,
+   pixel rectangles and clears writing every sample, depth read back. */
+static void multisample(void) {
+  const EGLint attributes[] = {EGL_SURFACE_TYPE, EGL_PBUFFER_BIT, EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+                               EGL_SAMPLE_BUFFERS, 1, EGL_SAMPLES, 4, EGL_DEPTH_SIZE, 24, EGL_NONE};
+  EGLConfig ms;
+  EGLint n = 0, samples = 0;
+  check(eglChooseConfig(dpy, attributes, &ms, 1, &n) && n == 1, "multisample.config", "no 4-sample pbuffer config");
+  if (n != 1) return;
+  eglGetConfigAttrib(dpy, ms, EGL_SAMPLES, &samples);
+  check(samples == 4, "multisample.config_samples", "EGL_SAMPLES is not 4");
+  const EGLint size[] = {EGL_WIDTH, 16, EGL_HEIGHT, 16, EGL_NONE};
+  EGLSurface pb = eglCreatePbufferSurface(dpy, ms, size);
+  EGLContext ctx = eglCreateContext(dpy, ms, EGL_NO_CONTEXT, NULL);
+  eglMakeCurrent(dpy, pb, pb, ctx);
+  GLint buffers = 0, count = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &buffers);
+  glGetIntegerv(GL_SAMPLES, &count);
+  check(buffers == 1 && count == 4, "multisample.gl_samples", "GL_SAMPLE_BUFFERS / GL_SAMPLES are not 1 / 4");
+  glOrtho(0, 16, 0, 16, -1, 1);
+  glClearColor(0, 0, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glColor3f(1, 1, 1);
+  rect(0, 0, 8.5f, 8);    /* samples at x 0.125, 0.375, 0.625, 0.875 in each pixel */
+  rect(0, 10, 8.25f, 12); /* one sample of pixel 8 */
+  check(red_at(7, 4) == 255 && red_at(8, 4) == 128 && red_at(9, 4) == 0, "multisample.edge_half",
+        "an edge through the middle of a pixel does not cover half its samples");
+  check(red_at(8, 11) == 64, "multisample.edge_quarter", "an edge a quarter into a pixel does not cover one sample");
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_MULTISAMPLE);
+  rect(0, 0, 8.4f, 8);
+  glEnable(GL_MULTISAMPLE);
+  rect(0, 10, 8.4f, 12);
+  check(red_at(8, 4) == 0 && red_at(8, 11) == 128, "multisample.disabled",
+        "GL_MULTISAMPLE off does not sample the pixel's centre alone");
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SAMPLE_COVERAGE);
+  glSampleCoverage(0.5f, GL_FALSE);
+  rect(0, 0, 16, 8);
+  glSampleCoverage(0.5f, GL_TRUE);
+  glColor3f(0, 0, 1);
+  rect(0, 0, 16, 4);
+  glDisable(GL_SAMPLE_COVERAGE);
+  check(pixel(3, 6) == 0x808080 && pixel(3, 2) == 0x8080ff,
+        "multisample.coverage", "glSampleCoverage 0.5 and its inverse do not split the samples");
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glColor4f(1, 1, 1, 0.3f);
+  rect(0, 0, 16, 8);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  check(red_at(4, 4) == 64, "multisample.alpha_to_coverage", "alpha 0.3 does not cover one sample of four");
+  glClear(GL_COLOR_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_SAMPLE_ALPHA_TO_ONE);
+  glColor4f(1, 1, 1, 0.25f);
+  rect(0, 0, 16, 4);
+  glEnable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glColor4f(1, 1, 1, 0.3f);
+  rect(0, 4, 16, 8);
+  glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
+  glDisable(GL_SAMPLE_ALPHA_TO_ONE);
+  rect(0, 8, 16, 10);
+  glDisable(GL_BLEND);
+  check(red_at(4, 2) == 255 && red_at(4, 6) == 64 && red_at(4, 9) == 77, "multisample.alpha_to_one",
+        "GL_SAMPLE_ALPHA_TO_ONE does not blend with an alpha of 1");
+  const unsigned char block[4 * 4] = {255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255, 255};
+  glRasterPos2i(12, 12);
+  glDrawPixels(2, 2, GL_RGBA, GL_UNSIGNED_BYTE, block);
+  check(red_at(12, 12) == 255 && red_at(13, 13) == 255 && red_at(14, 14) == 0, "multisample.draw_pixels",
+        "glDrawPixels does not write every sample of its pixels");
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(10, 0, 2, 2);
+  glClearColor(0, 1, 0, 1);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
+  check(pixel(10, 0) == 0x00ff00 && pixel(12, 0) == 0xffffff, "multisample.scissored_clear",
+        "a scissored clear does not clear every sample of its box alone");
+  glClearDepth(0.5);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  GLfloat depth = 0;
+  glReadPixels(1, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+  check(depth > 0.499f && depth < 0.501f, "multisample.depth", "the cleared depth does not read back");
+  check(glGetError() == GL_NO_ERROR, "multisample.no_error", "a GL error was left");
+  eglMakeCurrent(dpy, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglDestroyContext(dpy, ctx);
+  eglDestroySurface(dpy, pb);
+}
+
 struct Worker {
   EGLContext ctx;
   EGLSurface surface;
@@ -159,6 +257,7 @@ int main(int argc, char** argv) {
   }
   pbuffers_and_contexts();
   two_threads();
+  multisample();
   check(eglGetProcAddress("glBegin") != NULL, "getprocaddress", "glBegin has no address");
   EGLDisplay default_display = eglGetDisplay(EGL_DEFAULT_DISPLAY);
   check(default_display != EGL_NO_DISPLAY && eglInitialize(default_display, NULL, NULL), "default_display",
