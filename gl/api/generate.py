@@ -63,6 +63,8 @@ class Tables:
         for x in self.extensions:  # (each known to the registry: checked in __init__)
             for name in self.api.extensions[x].commands:
                 core = self.api.aliases.get(name, name)
+                if core not in implemented and name in implemented:  # the extension's own
+                    core = name
                 if core not in implemented:
                     why = "is pending" if core in self.pending else "is not a command of the configured features"
                     raise SystemExit(f"generate: config.toml: {x} is listed, but its command {name} "

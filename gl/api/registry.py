@@ -63,12 +63,16 @@ class Api:
     protos: dict[str, tuple[str, list[Param]]] = field(default_factory=dict)  # every command's signature
 
     def add_extension_commands(self, extension: str) -> list[Command]:
-        """The commands of `extension` that alias no other command (its own, with signatures of
-        their own: glVertexPointerEXT's count), added to the API's commands with the
+        """The commands of `extension` that alias no command of the features (its own, with
+        signatures of their own: glVertexPointerEXT's count; or named after a later version's
+        command, as glBlendEquationSeparateEXT), added to the API's commands with the
         extension's name as their feature and "ext" as their version."""
         added = []
+        known = {c.name for c in self.commands}
         for name in self.extensions[extension].commands:
-            if name in self.aliases or any(c.name == name for c in self.commands):
+            # An alias of a command of the features is that command; an alias of a later
+            # version's command (glBlendEquationSeparateEXT of GL 2.0's) is the extension's own.
+            if name in known or self.aliases.get(name) in known:
                 continue
             ret, params = self.protos[name]
             added.append(Command(name, ret, params, extension, "ext"))

@@ -193,6 +193,7 @@ void restore_color_buffer(GlContext& c, const AttribRecord& r) {
   d.blend_src_alpha = s.blend_src_alpha;
   d.blend_dst_alpha = s.blend_dst_alpha;
   d.blend_equation = s.blend_equation;
+  d.blend_equation_alpha = s.blend_equation_alpha;
   d.blend_color = s.blend_color;
   d.dither = s.dither;
   d.alpha_test = s.alpha_test;

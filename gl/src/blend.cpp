@@ -1,5 +1,6 @@
 // Blending (GL 1.4 section 4.1.7, the imaging subset's blending made core): glBlendFunc,
-// glBlendFuncSeparate, glBlendEquation, glBlendColor. Stores state; the core pipeline blends
+// glBlendFuncSeparate, glBlendEquation, glBlendColor, and EXT_blend_equation_separate's
+// glBlendEquationSeparateEXT. Stores state; the core pipeline blends
 // (BlendState, draw_state.cpp translates).
 #include <algorithm>
 
@@ -43,9 +44,14 @@ void exec::BlendFuncSeparate(GlContext& c, GLenum sfactor_rgb, GLenum dfactor_rg
   r.blend_src_alpha = sfactor_alpha, r.blend_dst_alpha = dfactor_alpha;
 }
 
-void exec::BlendEquation(GlContext& c, GLenum mode) {
-  if (!is_blend_equation(mode)) return c.set_error(GL_INVALID_ENUM);
-  c.raster.blend_equation = mode;
+// The same equation for the colour and for alpha.
+void exec::BlendEquation(GlContext& c, GLenum mode) { exec::BlendEquationSeparateEXT(c, mode, mode); }
+
+// EXT_blend_equation_separate: either equation unknown is GL_INVALID_ENUM, and nothing is set.
+void exec::BlendEquationSeparateEXT(GlContext& c, GLenum mode_rgb, GLenum mode_alpha) {
+  if (!is_blend_equation(mode_rgb) || !is_blend_equation(mode_alpha)) return c.set_error(GL_INVALID_ENUM);
+  c.raster.blend_equation = mode_rgb;
+  c.raster.blend_equation_alpha = mode_alpha;
 }
 
 void exec::BlendColor(GlContext& c, GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha) {

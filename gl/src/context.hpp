@@ -99,10 +99,11 @@ struct RasterState {
   bool depth_mask = true;
   bool blend = false;
   GLenum blend_src = GL_ONE, blend_dst = GL_ZERO;  // the colour factors (GL_BLEND_SRC_RGB, ...)
-  // GL 1.4 (section 4.1.7): glBlendFuncSeparate's alpha factors, glBlendEquation, and
-  // glBlendColor's constant, clamped to [0, 1] when given.
+  // GL 1.4 (section 4.1.7): glBlendFuncSeparate's alpha factors, glBlendEquation (the colour's
+  // and alpha's, apart with EXT_blend_equation_separate), and glBlendColor's constant, clamped
+  // to [0, 1] when given.
   GLenum blend_src_alpha = GL_ONE, blend_dst_alpha = GL_ZERO;
-  GLenum blend_equation = GL_FUNC_ADD;
+  GLenum blend_equation = GL_FUNC_ADD, blend_equation_alpha = GL_FUNC_ADD;
   glm::vec4 blend_color{0.0f};
   bool cull = false;
   GLenum cull_mode = GL_BACK;

@@ -74,6 +74,8 @@ BlendState blend_state(const RasterState& r) {
   b.src_alpha = blend_factor(r.blend_src_alpha);
   b.dst_alpha = blend_factor(r.blend_dst_alpha);
   b.equation = blend_equation(r.blend_equation);
+  b.separate_equations = r.blend_equation_alpha != r.blend_equation;
+  b.equation_alpha = blend_equation(r.blend_equation_alpha);
   b.color = r.blend_color;
   return b;
 }

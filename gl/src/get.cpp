@@ -62,6 +62,9 @@ Values ints(std::initializer_list<double> xs) { return make(Kind::kInt, xs); }
 // GL_CURRENT_RASTER_SECONDARY_COLOR: the raster position's secondary colour, which Mesa
 // answers (the enum came with GL 3.0's compatibility tables, not in a GL 1.x feature).
 constexpr GLenum kCurrentRasterSecondaryColor = 0x845F;
+// EXT_blend_equation_separate's GL_BLEND_EQUATION_ALPHA_EXT (GL_BLEND_EQUATION_RGB_EXT is
+// GL_BLEND_EQUATION).
+constexpr GLenum kBlendEquationAlpha = 0x883D;
 
 Values array_state(const ClientArray& a, bool with_size) {
   return with_size ? ints({double(a.size)}) : ints({});
@@ -176,7 +179,8 @@ bool query_raster(const GlContext& c, GLenum pname, Values& out) {
     case GL_BLEND_DST_RGB: out = ints({double(r.blend_dst)}); return true;
     case GL_BLEND_SRC_ALPHA: out = ints({double(r.blend_src_alpha)}); return true;
     case GL_BLEND_DST_ALPHA: out = ints({double(r.blend_dst_alpha)}); return true;
-    case GL_BLEND_EQUATION: out = ints({double(r.blend_equation)}); return true;
+    case GL_BLEND_EQUATION: out = ints({double(r.blend_equation)}); return true;  // also _RGB_EXT
+    case kBlendEquationAlpha: out = ints({double(r.blend_equation_alpha)}); return true;
     case GL_BLEND_COLOR: out = vec(Kind::kColor, glm::value_ptr(r.blend_color), 4); return true;
     case GL_CULL_FACE_MODE: out = ints({double(r.cull_mode)}); return true;
     case GL_FRONT_FACE: out = ints({double(r.front_face)}); return true;

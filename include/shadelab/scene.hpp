@@ -53,6 +53,10 @@ struct BlendState {
   BlendFactor src_alpha = BlendFactor::kSrcAlpha;
   BlendFactor dst_alpha = BlendFactor::kOneMinusSrcAlpha;
   BlendEquation equation = BlendEquation::kAdd;
+  /// EXT_blend_equation_separate: alpha's own equation when set (else `equation` blends alpha
+  /// too).
+  bool separate_equations = false;
+  BlendEquation equation_alpha = BlendEquation::kAdd;
   glm::vec4 color{0.0f};
 
   BlendState() = default;
@@ -63,8 +67,10 @@ struct BlendState {
   /// every channel (the fast pipeline's blend kernels).
   bool source_over() const {
     return src == BlendFactor::kSrcAlpha && dst == BlendFactor::kOneMinusSrcAlpha && src_alpha == src &&
-           dst_alpha == dst && equation == BlendEquation::kAdd;
+           dst_alpha == dst && equation == BlendEquation::kAdd && alpha_equation() == BlendEquation::kAdd;
   }
+  /// The equation that blends alpha.
+  BlendEquation alpha_equation() const { return separate_equations ? equation_alpha : equation; }
 };
 
 /// Look-at camera. Angles in degrees; distances in world units.

@@ -382,21 +382,21 @@ HWY_INLINE Rgba blend_src_alpha(const Rgba& src, const Rgba& dst) {
 }
 
 /// fragment_ops.cpp's blend, then clamped: any equation and factors (GL 1.4 section 4.1.7),
-/// alpha with its own factors. kMin and kMax read no factor.
+/// alpha with its own factors and equation. kMin and kMax read no factor.
 HWY_INLINE Rgba blend_colors(const BlendState& b, const float* constant, const Rgba& src, const Rgba& dst) {
   Rgba out;
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
     VB v;
-    if (b.equation == BlendEquation::kMin) {
+    const BlendEquation e = c == 3 ? b.alpha_equation() : b.equation;
+    if (e == BlendEquation::kMin) {
       v = hn::Min(src.c[c], dst.c[c]);
-    } else if (b.equation == BlendEquation::kMax) {
+    } else if (e == BlendEquation::kMax) {
       v = hn::Max(src.c[c], dst.c[c]);
     } else {
       const VB s = hn::Mul(src.c[c], blend_factor(c == 3 ? b.src_alpha : b.src, c, src, dst, constant));
       const VB d = hn::Mul(dst.c[c], blend_factor(c == 3 ? b.dst_alpha : b.dst, c, src, dst, constant));
-      v = b.equation == BlendEquation::kAdd ? hn::Add(s, d) : b.equation == BlendEquation::kSubtract ? hn::Sub(s, d)
-                                                                                                  : hn::Sub(d, s);
+      v = e == BlendEquation::kAdd ? hn::Add(s, d) : e == BlendEquation::kSubtract ? hn::Sub(s, d) : hn::Sub(d, s);
     }
     out.c[c] = clamp_unit(v);
   }

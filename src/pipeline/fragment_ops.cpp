@@ -167,17 +167,18 @@ glm::vec4 blend_constant(const BlendState& b) {
 glm::vec4 blend(const BlendState& b, const glm::vec4& constant, const glm::vec4& src, const glm::vec4& dst) {
   glm::vec4 out;
   for (int c = 0; c < 4; ++c) {
-    if (b.equation == BlendEquation::kMin) {
+    const BlendEquation e = c == 3 ? b.alpha_equation() : b.equation;
+    if (e == BlendEquation::kMin) {
       out[c] = std::min(src[c], dst[c]);
       continue;
     }
-    if (b.equation == BlendEquation::kMax) {
+    if (e == BlendEquation::kMax) {
       out[c] = std::max(src[c], dst[c]);
       continue;
     }
     const float s = src[c] * blend_factor(c == 3 ? b.src_alpha : b.src, c, src, dst, constant);
     const float d = dst[c] * blend_factor(c == 3 ? b.dst_alpha : b.dst, c, src, dst, constant);
-    out[c] = b.equation == BlendEquation::kAdd ? s + d : b.equation == BlendEquation::kSubtract ? s - d : d - s;
+    out[c] = e == BlendEquation::kAdd ? s + d : e == BlendEquation::kSubtract ? s - d : d - s;
   }
   return out;
 }

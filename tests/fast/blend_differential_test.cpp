@@ -90,6 +90,30 @@ TEST(FastBlend, EveryEquationAndFactorPairOnTheSimdPath) {
   }
 }
 
+// EXT_blend_equation_separate: alpha blended by its own equation, every pair of equations.
+TEST(FastBlend, SeparateAlphaEquationsOnTheSimdPath) {
+  PipelineContext two(2);
+  std::uint64_t blended = 0;
+  for (int pair = 0; pair < 25; ++pair) {
+    RandomDraws random(unsigned(27000 + pair));
+    glm::ivec2 size{random.integer(20, 60), random.integer(16, 40)};
+    Framebuffer initial = random.framebuffer(size);
+    RandomDraw d = random.draw(size);
+    simd_only(d);
+    BlendState& b = d.frag.blend;
+    b = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
+    b.dst_alpha = BlendFactor::kOneMinusDstAlpha;
+    b.equation = BlendEquation(pair / 5);
+    b.separate_equations = true;
+    b.equation_alpha = BlendEquation(pair % 5);
+    Result ref = render(initial, {d}, nullptr);
+    Result fast = render(initial, {d}, &two);
+    ASSERT_EQ(compare_buffers(fast.fb, ref.fb), "") << "equations " << pair / 5 << ", " << pair % 5;
+    blended += ref.stats.pixels_shaded;
+  }
+  EXPECT_GT(blended, 2000u);
+}
+
 // Deferred draws keep their blend state (the constant colour, the equation) as it was made.
 TEST(FastBlend, DeferredDrawsKeepTheirBlendState) {
   PipelineContext two(2);

@@ -99,6 +99,21 @@ TEST_P(BlendStateTest, MinAndMaxIgnoreTheFactors) {
   EXPECT_EQ(c.color(), glm::ivec4(200, 100, 100, 255));
 }
 
+TEST_P(BlendStateTest, AlphaTakesItsOwnEquationWhenSeparate) {
+  Canvas c(GetParam());
+  c.fb.clear_color(bytes(200, 40, 100, 60));
+  c.frag.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
+  c.frag.blend.equation = BlendEquation::kReverseSubtract;  // dst - src for the colour
+  c.frag.blend.separate_equations = true;
+  c.frag.blend.equation_alpha = BlendEquation::kMax;  // max(src, dst) for alpha
+  c.rect(bytes(100, 100, 100, 100));
+  EXPECT_EQ(c.color(), glm::ivec4(100, 0, 0, 100));
+  c.fb.clear_color(bytes(200, 40, 100, 60));
+  c.frag.blend.separate_equations = false;  // the colour's equation for alpha again
+  c.rect(bytes(100, 100, 100, 100));
+  EXPECT_EQ(c.color(), glm::ivec4(100, 0, 0, 0));
+}
+
 TEST_P(BlendStateTest, AlphaTakesItsOwnFactors) {
   Canvas c(GetParam());
   c.fb.clear_color(bytes(200, 40, 100, 60));
