@@ -14,6 +14,9 @@
 #include <limits>
 #include <vector>
 
+// EXT_blend_equation_separate's command, which <GL/gl.h> does not declare.
+extern "C" void glBlendEquationSeparateEXT(GLenum mode_rgb, GLenum mode_alpha);
+
 namespace {
 
 class Input {
@@ -88,7 +91,7 @@ class Input {
         // GL 1.4's blending and stencil, GL 1.5's occlusion queries.
         GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX, GL_CONSTANT_COLOR,
         GL_ONE_MINUS_CONSTANT_COLOR, GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA, GL_SRC_COLOR,
-        GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
+        GL_ONE_MINUS_DST_COLOR, GL_BLEND_COLOR, GL_BLEND_EQUATION, 0x883D /* GL_BLEND_EQUATION_ALPHA_EXT */, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA,
         GL_INCR_WRAP, GL_DECR_WRAP, GL_SAMPLES_PASSED, GL_QUERY_RESULT, GL_QUERY_RESULT_AVAILABLE,
         GL_QUERY_COUNTER_BITS, GL_CURRENT_QUERY,
         // GL 1.3's multisample enables.
@@ -265,7 +268,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         switch (in.byte() % 8) {
           case 0: glBlendFunc(in.any_enum(), in.any_enum()); break;
           case 1: glBlendFuncSeparate(in.any_enum(), in.any_enum(), in.any_enum(), in.any_enum()); break;
-          case 2: glBlendEquation(in.any_enum()); break;
+          case 2:  // and EXT_blend_equation_separate's
+            if (in.byte() % 2) glBlendEquation(in.any_enum());
+            else glBlendEquationSeparateEXT(in.any_enum(), in.any_enum());
+            break;
           case 3: glBlendColor(in.number(), in.number(), in.number(), in.number()); break;
           case 4: {
             GLuint names[4] = {GLuint(in.small(0, 4)), GLuint(in.small(0, 4)), 0, 1};
