@@ -131,7 +131,7 @@ FragmentState fragment_state(const GlContext& c) {
   // GL 1.4 section 3.3: the derived size clamped to [GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX]. As
   // in Mesa, glPointSize's size is clamped so when nothing attenuates it; else the core derives
   // each point's size and clamps it (never below kMinPointSize). The fade threshold applies to
-  // multisampled points only: it changes nothing here (nor in llvmpipe).
+  // multisampled points only (multisample.cpp).
   f.point = {raster_size(p.point_size, 0.0f, kMaxPointSize), p.point_smooth};
   f.point.sprite = p.point_sprite;
   f.point.coord_replace = p.point_sprite ? p.coord_replace : 0;

@@ -14,10 +14,13 @@
 // anything reads it.
 //
 // With GL_MULTISAMPLE off, every sample of a pixel takes the pixel's own fragment (section
-// 3.2.1: single-sample rasterization, full coverage). With it on, GL_POINT_SMOOTH and
-// GL_LINE_SMOOTH are ignored (sections 3.3.3, 3.4.4), GL_SAMPLE_COVERAGE leaves out the samples
-// glSampleCoverage's mask clears, and GL_SAMPLE_ALPHA_TO_COVERAGE covers a sample only where
-// the fragment's alpha exceeds the sample's threshold ((k + 0.5) / samples) (draw_state.cpp).
+// 3.2.1: single-sample rasterization, full coverage). With it on, points are discs of their
+// size (squares as sprites) and lines rectangles of their width, whatever GL_POINT_SMOOTH and
+// GL_LINE_SMOOTH say (sections 3.3.3, 3.4.4; the core's multisample point and line), points
+// below GL_POINT_FADE_THRESHOLD_SIZE fade, GL_SAMPLE_COVERAGE leaves out the samples
+// glSampleCoverage's mask clears, GL_SAMPLE_ALPHA_TO_COVERAGE covers a sample only where the
+// fragment's alpha exceeds the sample's threshold ((k + 0.5) / samples), and
+// GL_SAMPLE_ALPHA_TO_ONE makes the alpha 1 (sample_fragment_state).
 // The enables are glEnable capabilities (state.cpp); GL_MULTISAMPLE_BIT is attrib.cpp's.
 #include <algorithm>
 #include <array>
@@ -113,8 +116,13 @@ unsigned sample_mask(const GlContext& c) {
 }
 
 void sample_fragment_state(const GlContext& c, FragmentState& f) {
-  f.line.smooth = false;  // sections 3.3.3 and 3.4.4: the smooth enables are ignored
+  // Sections 3.3.3 and 3.4.4: points are discs (squares as sprites), lines rectangles, their
+  // smooth enables ignored; points below the fade threshold drawn at its size, faded.
+  f.line.smooth = false;
   f.point.smooth = false;
+  f.line.multisample = true;
+  f.point.multisample = true;
+  f.point.fade_threshold = c.prims.point_fade;
   AlphaTestState& a = f.alpha_test;
   if (c.multisample.alpha_to_one) {
     // Section 4.1.3: the alpha is 1 after the coverage is taken from it, so the alpha test

@@ -121,6 +121,11 @@ struct LineState {
   bool stipple = false;  ///< GL_LINE_STIPPLE
   std::uint16_t pattern = 0xffff;  ///< glLineStipple: bit i draws pixel i of 16
   std::uint16_t factor = 1;        ///< glLineStipple's repeat, 1 to 256
+  /// Multisample rasterization (GL 1.5 section 3.4.4): the line is the rectangle of its width
+  /// (at least 1) centred on the segment, ending at its endpoints, and covers the pixels whose
+  /// centre it holds (smooth ignored). The GL library sets it for a multisample buffer's
+  /// passes, each of which puts a sample on the pixel centres.
+  bool multisample = false;
 };
 
 /// How points are drawn (GL 1.1 section 3.3; GL 1.4's point parameters).
@@ -139,6 +144,12 @@ struct PointState {
   /// to 1 at its bottom (the upper-left origin).
   bool sprite = false;
   std::uint8_t coord_replace = 0;
+  /// Multisample rasterization (GL 1.5 section 3.3.3): the point is the disc of diameter its
+  /// size (a square of side its size with `sprite`), unrounded, covering the pixels whose
+  /// centre it holds (smooth ignored); a size below `fade_threshold` (GL_POINT_FADE_THRESHOLD_SIZE)
+  /// draws the point at the threshold's size with its alpha times (size / threshold)^2.
+  bool multisample = false;
+  float fade_threshold = 1.0f;
   bool attenuated() const { return attenuation != glm::vec3(1.0f, 0.0f, 0.0f); }
 };
 

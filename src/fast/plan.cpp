@@ -156,7 +156,8 @@ void make_plan(DrawJob& job) {
   const bool line_edges = frag.front_mode == PolygonMode::kLine || frag.back_mode == PolygonMode::kLine;
   const bool point_edges = frag.front_mode == PolygonMode::kPoint || frag.back_mode == PolygonMode::kPoint;
   p.coverage = (frag.line.smooth && (!in.lines.empty() || (line_edges && !in.triangles.empty()))) ||
-               (frag.point.smooth && (!in.points.empty() || (point_edges && !in.triangles.empty())));
+               ((frag.point.smooth || (frag.point.multisample && !frag.point.sprite)) &&
+                (!in.points.empty() || (point_edges && !in.triangles.empty())));
   p.kernel = p.coverage ? BlockKernel::kGeneral : kernel_for(p, frag);
   p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;

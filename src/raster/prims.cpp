@@ -144,6 +144,7 @@ void PrimAssembler::segment(const PrimVertex& a, const PrimVertex& b, bool front
                             PieceSink& sink) {
   if (PrimitiveObserver* o = frag_.observer) return o->line(observed(a, front, fb_height_), observed(b, front, fb_height_));
   if (frag_.line.stipple) return stippled(a, b, front, provoking, sink);
+  if (frag_.line.multisample) return multisample_line(a, b, front, provoking, sink);
   if (frag_.line.smooth) return smooth_line(a, b, front, provoking, sink);
   aliased_line(a, b, front, provoking, sink);
 }
@@ -154,13 +155,15 @@ void PrimAssembler::segment(const PrimVertex& a, const PrimVertex& b, bool front
 void PrimAssembler::stippled(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
                              PieceSink& sink) {
   const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
-  const float length = frag_.line.smooth ? std::sqrt(dx * dx + dy * dy) : std::max(std::fabs(dx), std::fabs(dy));
+  const float length = frag_.line.smooth || frag_.line.multisample ? std::sqrt(dx * dx + dy * dy)
+                                                                   : std::max(std::fabs(dx), std::fabs(dy));
   const int pixels = std::isfinite(length) ? int(std::ceil(length)) : 0;
   const unsigned factor = std::max<unsigned>(1u, frag_.line.factor);
   auto on = [&](int i) { return (frag_.line.pattern >> (((stipple_counter_ + unsigned(i)) / factor) & 15u)) & 1u; };
   auto run = [&](float t0, float t1) {
     const PrimVertex v0 = t0 > 0.0f ? screen_lerp(a, b, t0) : a, v1 = t1 < 1.0f ? screen_lerp(a, b, t1) : b;
-    if (frag_.line.smooth) smooth_line(v0, v1, front, provoking, sink);
+    if (frag_.line.multisample) multisample_line(v0, v1, front, provoking, sink);
+    else if (frag_.line.smooth) smooth_line(v0, v1, front, provoking, sink);
     else aliased_line(v0, v1, front, provoking, sink);
   };
   bool state = false;
@@ -188,6 +191,34 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
   }
   p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
   p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
+  p.triangles = 2;
+  p.front = front;
+  p.offset = false;
+  p.polygon = false;
+  p.provoking = provoking;
+  p.coverage = Coverage{};
+  flat_colors(p);
+  sink.piece(p);
+}
+
+// GL 1.5 section 3.4.4's multisampled line: the rectangle of the line's width centred on the
+// segment, from endpoint to endpoint, filled as two triangles (no coverage: it covers the
+// pixel centres, each a sample of the pass, inside it).
+void PrimAssembler::multisample_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                                     PieceSink& sink) {
+  const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
+  const float length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0.0f) || !std::isfinite(length)) return;  // no area
+  const float half_width = 0.5f * clamp_size(frag_.line.width);
+  const float nx = -dy / length * half_width, ny = dx / length * half_width;
+  const float ox[4] = {nx, -nx, nx, -nx}, oy[4] = {ny, -ny, ny, -ny};
+  Piece& p = piece_;
+  for (int k = 0; k < 4; ++k) {
+    const PrimVertex& v = k < 2 ? a : b;
+    copy_vertex(p.corner[k], v, double(v.win.x + ox[k]), gl_y(v.win.y + oy[k], fb_height_));
+  }
+  p.tri[0][0] = 2, p.tri[0][1] = 1, p.tri[0][2] = 0;
+  p.tri[1][0] = 3, p.tri[1][1] = 1, p.tri[1][2] = 2;
   p.triangles = 2;
   p.front = front;
   p.offset = false;
@@ -237,7 +268,18 @@ void PrimAssembler::smooth_line(const PrimVertex& a, const PrimVertex& b, bool f
 void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t provoking, PieceSink& sink) {
   if (PrimitiveObserver* o = frag_.observer) return o->point(observed(v, front, fb_height_));
   if (frag_.line.stipple) stipple_counter_ = 0;  // Mesa's stipple stage restarts at a point
-  const float size = clamp_size(v.point_size);  // glPointSize's, or the derived size
+  const PointState& ps = frag_.point;
+  float size = clamp_size(v.point_size);  // glPointSize's, or the derived size
+  float fade = 1.0f;
+  if (ps.multisample) {  // unrounded, below 1 too; faded below the threshold
+    size = std::isnan(v.point_size) ? 1.0f : std::min(v.point_size, kMaxWidth);
+    if (size < ps.fade_threshold) {
+      const float q = std::max(size, 0.0f) / ps.fade_threshold;
+      fade = q * q;
+      size = ps.fade_threshold;
+    }
+    if (!(size > 0.0f)) return;
+  }
   Piece& p = piece_;
   p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
   p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
@@ -247,11 +289,12 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
   p.polygon = false;
   p.provoking = provoking;
   p.coverage = Coverage{};
-  if (frag_.point.sprite || frag_.point.smooth) {
+  if (ps.sprite || ps.smooth || ps.multisample) {
     // A square around the point: a sprite's side is its size; Mesa's smooth point has radius 1
-    // up to size 2, else size / 2, and discards the fragments beyond the radius.
-    const bool sprite = frag_.point.sprite;
-    const float r = sprite || size > 2.0f ? 0.5f * size : 1.0f;
+    // up to size 2, else size / 2, and discards the fragments beyond the radius; a
+    // multisampled point is the disc of radius size / 2, whole.
+    const bool sprite = ps.sprite;
+    const float r = sprite || ps.multisample || size > 2.0f ? 0.5f * size : 1.0f;
     const float sx[4] = {-r, r, r, -r}, sy[4] = {-r, -r, r, r};
     for (int k = 0; k < 4; ++k) {
       copy_vertex(p.corner[k], v, double(v.win.x + sx[k]), gl_y(v.win.y + sy[k], fb_height_));
@@ -266,7 +309,7 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
       float k = 1.0f / r;
       k = 1.0f - 2.0f * k + k * k;
       p.coverage.kind = Coverage::Kind::kPoint;
-      p.coverage.a = k;
+      p.coverage.a = ps.multisample ? -1.0f : k;  // -1: no rim, the disc is whole
       affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, 1.0f, 1.0f, p.coverage.u0, p.coverage.ux, p.coverage.uy);
       affine(p.corner[0], p.corner[1], p.corner[2], -1.0f, -1.0f, 1.0f, p.coverage.v0, p.coverage.vx, p.coverage.vy);
     }
@@ -279,6 +322,10 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
     }
   }
   flat_colors(p);
+  for (int k = 0; fade < 1.0f && k < 4; ++k) {  // the faded point's alpha
+    p.corner[k].attr[std::size_t(kFrontColor) + 3] *= fade;
+    p.corner[k].attr[std::size_t(kBackColor) + 3] *= fade;
+  }
   sink.piece(p);
 }
 

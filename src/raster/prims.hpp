@@ -20,7 +20,8 @@ namespace shadelab::detail {
 /// computes it, from two functions affine in window position (GL coordinates: u = u0 + ux x
 /// + uy y at the pixel centre (x, y)). Lines: alpha times sat(a - |u|) sat(b - |v|). Points:
 /// d = u^2 + v^2; fragments with d > 1 are discarded; alpha times (1 - d) / (1 - a) where
-/// d <= a (Mesa 22's lowering; see docs/rasterization.md), else alpha unchanged.
+/// d <= a (Mesa 22's lowering; see docs/rasterization.md), else alpha unchanged (a < 0: a
+/// multisampled point's whole disc).
 struct Coverage {
   enum class Kind : std::uint8_t { kNone, kLine, kPoint };
   Kind kind = Kind::kNone;
@@ -100,6 +101,7 @@ class PrimAssembler {
   void stippled(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
   void aliased_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
   void smooth_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void multisample_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
   void point_piece(const PrimVertex& p, bool front, std::uint32_t provoking, PieceSink& sink);
   void flat_colors(Piece& p) const;
   float unfilled_offset(const PrimVertex (&w)[3], float det) const;

@@ -134,6 +134,8 @@ TEST_P(MultisampleTest, MultisampleOffSamplesThePixelCentre) {
   EXPECT_EQ(red(8, 10), 128);
 }
 
+// Sections 3.3.3 and 3.4.4: a point is a disc of its size, a line the rectangle of its width,
+// smooth or not; a point below the fade threshold fades.
 TEST_P(MultisampleTest, SmoothLinesAndPointsAreMultisampledInstead) {
   glEnable(GL_LINE_SMOOTH);
   glEnable(GL_POINT_SMOOTH);
@@ -144,17 +146,36 @@ TEST_P(MultisampleTest, SmoothLinesAndPointsAreMultisampledInstead) {
   glEnd();
   glPointSize(3.0f);
   glBegin(GL_POINTS);
-  glVertex2f(8.5f, 12.5f);  // the square of pixels 7 to 9, 11 to 13
+  glVertex2f(8.5f, 12.5f);  // the disc of radius 1.5 on pixel (8, 12)
   glEnd();
+  glPointSize(0.5f);  // below the fade threshold (1): drawn at size 1, alpha times 1/4
+  glBegin(GL_POINTS);
+  glVertex2f(4.5f, 14.5f);
+  glEnd();
+  glPointSize(1.0f);
   glDisable(GL_BLEND);
   EXPECT_EQ(red(8, 4), 255);  // every sample's line is row 4: no smoothed fringe
   EXPECT_EQ(red(8, 3), 0);
   EXPECT_EQ(red(8, 5), 0);
   for (int x = 7; x <= 9; ++x) EXPECT_EQ(red(x, 12), 255) << x;  // whole, no smoothed rim
+  EXPECT_EQ(red(7, 11), 128);  // a disc: two samples of the corner pixel
+  EXPECT_EQ(red(4, 14), 64);
   EXPECT_EQ(red(6, 12), 0);
   EXPECT_EQ(red(10, 12), 0);
   EXPECT_EQ(red(8, 10), 0);
   EXPECT_EQ(red(8, 14), 0);
+}
+
+TEST_P(MultisampleTest, WideLinesAreRectanglesOfTheirWidth) {
+  glLineWidth(2.0f);
+  glBegin(GL_LINES);
+  glVertex2f(2, 2), glVertex2f(14, 14);  // samples within 1 of the diagonal y = x
+  glEnd();
+  glLineWidth(1.0f);
+  EXPECT_EQ(red(8, 8), 255);
+  EXPECT_EQ(red(9, 8), 191);  // three samples of four within the rectangle
+  EXPECT_EQ(red(9, 7), 0);
+  EXPECT_EQ(red(15, 15), 0);  // it ends at the endpoints
 }
 
 TEST_P(MultisampleTest, SampleCoverageKeepsTheFirstSamplesOrTheOthers) {
