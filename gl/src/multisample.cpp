@@ -33,8 +33,9 @@
 namespace shadelab::gl {
 namespace {
 
-// The sample positions within a pixel, GL window coordinates (y up): llvmpipe's four, whose
-// y its rasterizer measures from the top of a window's buffer.
+// The sample positions within a pixel, GL window coordinates (y up): the usual four
+// (Direct3D's, and llvmpipe's for the framebuffers it does multisample), whose y those measure
+// from the top.
 constexpr std::array<glm::vec2, 4> kPositions4{{{0.375f, 0.875f}, {0.875f, 0.625f}, {0.125f, 0.375f}, {0.625f, 0.125f}}};
 
 glm::vec2 sample_position(int count, int k) {
