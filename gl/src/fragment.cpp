@@ -158,9 +158,19 @@ void clear_box_to(GlContext& c, bool color, bool depth, bool stencil, int x0, in
   const auto& mask = c.raster.color_mask;
   const std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
   const std::uint8_t s = std::uint8_t(c.raster.clear_stencil & 0xff);
+  const bool whole_pixels = mask[0] && mask[1] && mask[2] && mask[3];
+  std::uint32_t word;
+  std::memcpy(&word, px.data(), 4);
   auto rows = [&](std::size_t begin, std::size_t end) {
     for (std::size_t y = begin; y < end; ++y) {
       const std::size_t row = y * std::size_t(c.fb.width);
+      if (whole_pixels && (!stencil || write == 0xffu)) {  // row by row, as words (every sample of a
+        const std::size_t a = row + std::size_t(x0), n = std::size_t(x1 - x0);  // multisample buffer)
+        if (color) std::fill_n(reinterpret_cast<std::uint32_t*>(c.fb.color.data()) + a, n, word);
+        if (depth) std::fill_n(c.fb.depth.data() + a, n, d);
+        if (stencil) std::memset(c.fb.stencil.data() + a, s, n);
+        continue;
+      }
       for (std::size_t i = row + std::size_t(x0); i < row + std::size_t(x1); ++i) {
         for (std::size_t k = 0; color && k < 4; ++k) {
           if (mask[k]) c.fb.color[i * 4 + k] = px[k];
@@ -195,6 +205,11 @@ void clear_samples(GlContext& c, GLbitfield mask, bool scissored, int x0, int y0
     enter_sample(c, k);
     clear_box_to(c, color, depth && k > 0, stencil && k > 0, x0, y0, x1, y1, d);
     leave_sample(c);
+  }
+  const auto& m = c.raster.color_mask;
+  if (color && !scissored && m[0] && m[1] && m[2] && m[3]) {  // every sample and pixel the clear
+    std::fill(c.ms.unresolved.begin(), c.ms.unresolved.end(), std::uint8_t(0));  // colour: resolved
+    c.ms.any_unresolved = false;
   }
 }
 
