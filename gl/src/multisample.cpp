@@ -133,17 +133,10 @@ void sample_fragment_state(const GlContext& c, FragmentState& f) {
   }
   if (!c.multisample.alpha_to_coverage) return;
   // Section 4.1.3: the fragment's alpha becomes a coverage mask; here sample k is covered
-  // where alpha > (k + 0.5) / samples (alpha 1 covers them all, alpha 0 none). The mask meets
-  // the alpha test (section 4.1.4, after it) as one comparison of the same alpha: the larger
-  // of two lower bounds, none with GL_NEVER.
-  const float bound = (float(c.ms.active) + 0.5f) / float(c.ms.count);
-  if (!a.enabled || a.func == CompareFunc::kAlways || (a.func == CompareFunc::kGreater && a.ref < bound) ||
-      (a.func == CompareFunc::kGequal && a.ref <= bound)) {
-    a = {true, CompareFunc::kGreater, bound};
-  }
-  // kNever and the larger lower bounds stand as they are. An upper bound (GL_LESS, GL_LEQUAL,
-  // GL_EQUAL, GL_NOTEQUAL) with the coverage's lower one is not one comparison: the alpha
-  // test stands alone there.
+  // where alpha > (k + 0.5) / samples (alpha 1 covers them all, alpha 0 none), checked with
+  // the alpha test (section 4.1.4, after it) on the same alpha.
+  if (!a.enabled) a = AlphaTestState{true, CompareFunc::kAlways, 0.0f};
+  a.floor = (float(c.ms.active) + 0.5f) / float(c.ms.count);
 }
 
 glm::mat4 sample_projection(const GlContext& c, const glm::mat4& projection) {

@@ -85,6 +85,9 @@ struct AlphaTestState {
   bool enabled = false;
   CompareFunc func = CompareFunc::kAlways;
   float ref = 0.0f;  ///< clamped to [0, 1]
+  /// When at least 0, the alpha must also exceed it (compared the same way): a multisample
+  /// pass's GL_SAMPLE_ALPHA_TO_COVERAGE, whose sample is covered above that alpha.
+  float floor = -1.0f;
 };
 
 /// glLogicOp's sixteen operations (GL 1.1 section 4.1.7, table 4.2), in the order of their GL

@@ -423,11 +423,13 @@ HWY_INLINE hn::Vec<DUB> byte_plane_colors(const TrianglePlanes& planes, const We
 }
 
 /// The lanes whose alpha passes the alpha test (fragment_ops.cpp's alpha_test): the alpha
-/// as its 8-bit value, in a float, against the reference's.
+/// as its 8-bit value, in a float, against the reference's (and above the floor's).
 HWY_INLINE unsigned alpha_bits(const AlphaTestState& a, float ref_byte, VB alpha) {
   const DB db;
   const VB byte = hn::Trunc(hn::Add(hn::Mul(clamp_unit(alpha), hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf)));
-  return block_bits(depth_compare(a.func, byte, hn::Set(db, ref_byte)));
+  const unsigned bits = block_bits(depth_compare(a.func, byte, hn::Set(db, ref_byte)));
+  if (a.floor < 0.0f) return bits;
+  return bits & block_bits(hn::Gt(byte, hn::Set(db, float(detail::unorm8(a.floor)))));
 }
 
 /// fragment_ops.cpp's logic_op on RGBA8 words.

@@ -45,7 +45,8 @@ std::uint8_t unorm8(float c) {
 }
 
 bool alpha_test(const AlphaTestState& a, float alpha) {
-  return compare(a.func, float(unorm8(alpha)), float(unorm8(a.ref)));
+  const float byte = float(unorm8(alpha));
+  return compare(a.func, byte, float(unorm8(a.ref))) && (a.floor < 0.0f || byte > float(unorm8(a.floor)));
 }
 
 std::uint32_t logic_op(LogicOp op, std::uint32_t s, std::uint32_t d) {

@@ -208,6 +208,11 @@ TEST_P(MultisampleTest, AlphaToCoverageAndAlphaToOne) {
   rect(0, 4, 8, 8);
   glColor4f(1, 1, 1, 0.9f);
   rect(8, 4, 16, 8);
+  glAlphaFunc(GL_LESS, 0.5f);  // an upper bound too: 0.4 keeps its two samples, 0.6 none
+  glColor4f(1, 1, 1, 0.4f);
+  rect(0, 14, 8, 16);
+  glColor4f(1, 1, 1, 0.6f);
+  rect(8, 14, 16, 16);
   glDisable(GL_ALPHA_TEST);
   glDisable(GL_SAMPLE_ALPHA_TO_COVERAGE);
   EXPECT_EQ(red(1, 2), 0);
@@ -217,6 +222,8 @@ TEST_P(MultisampleTest, AlphaToCoverageAndAlphaToOne) {
   EXPECT_EQ(red(13, 2), 191);
   EXPECT_EQ(red(4, 6), 0);
   EXPECT_EQ(red(12, 6), 255);
+  EXPECT_EQ(red(4, 15), 128);
+  EXPECT_EQ(red(12, 15), 0);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnable(GL_SAMPLE_ALPHA_TO_ONE);
