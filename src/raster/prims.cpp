@@ -201,17 +201,10 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
   sink.piece(p);
 }
 
-// GL 1.5 section 3.4.4's multisampled line: the rectangle of the line's width centred on the
-// segment, from endpoint to endpoint, filled as two triangles (no coverage: it covers the
-// pixel centres, each a sample of the pass, inside it).
-void PrimAssembler::multisample_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
-                                     PieceSink& sink) {
-  const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
-  const float length = std::sqrt(dx * dx + dy * dy);
-  if (!(length > 0.0f) || !std::isfinite(length)) return;  // no area
-  const float half_width = 0.5f * clamp_size(frag_.line.width);
-  const float nx = -dy / length * half_width, ny = dx / length * half_width;
-  const float ox[4] = {nx, -nx, nx, -nx}, oy[4] = {ny, -ny, ny, -ny};
+// The piece of a line drawn as a rectangle: corners 0 and 1 at a, 2 and 3 at b, each moved by
+// (ox, oy) in window coordinates (y down), two triangles, no coverage yet.
+void PrimAssembler::line_rectangle(const PrimVertex& a, const PrimVertex& b, const float (&ox)[4],
+                                   const float (&oy)[4], bool front, std::uint32_t provoking) {
   Piece& p = piece_;
   for (int k = 0; k < 4; ++k) {
     const PrimVertex& v = k < 2 ? a : b;
@@ -225,8 +218,22 @@ void PrimAssembler::multisample_line(const PrimVertex& a, const PrimVertex& b, b
   p.polygon = false;
   p.provoking = provoking;
   p.coverage = Coverage{};
-  flat_colors(p);
-  sink.piece(p);
+}
+
+// GL 1.5 section 3.4.4's multisampled line: the rectangle of the line's width centred on the
+// segment, from endpoint to endpoint, filled as two triangles (no coverage: it covers the
+// pixel centres, each a sample of the pass, inside it).
+void PrimAssembler::multisample_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
+                                     PieceSink& sink) {
+  const float dx = b.win.x - a.win.x, dy = b.win.y - a.win.y;
+  const float length = std::sqrt(dx * dx + dy * dy);
+  if (!(length > 0.0f) || !std::isfinite(length)) return;  // no area
+  const float half_width = 0.5f * clamp_size(frag_.line.width);
+  const float nx = -dy / length * half_width, ny = dx / length * half_width;
+  const float ox[4] = {nx, -nx, nx, -nx}, oy[4] = {ny, -ny, ny, -ny};
+  line_rectangle(a, b, ox, oy, front, provoking);
+  flat_colors(piece_);
+  sink.piece(piece_);
 }
 
 // Mesa's smooth line: a rectangle half a pixel longer than the line at each end and wider
@@ -243,18 +250,8 @@ void PrimAssembler::smooth_line(const PrimVertex& a, const PrimVertex& b, bool f
   const float tl = 0.5f, tw = half_width;
   const float ox[4] = {-tl * c - tw * s, -tl * c - -tw * s, tl * c - tw * s, tl * c - -tw * s};
   const float oy[4] = {-tl * s + tw * c, -tl * s + -tw * c, tl * s + tw * c, tl * s + -tw * c};
+  line_rectangle(a, b, ox, oy, front, provoking);
   Piece& p = piece_;
-  for (int k = 0; k < 4; ++k) {
-    const PrimVertex& v = k < 2 ? a : b;
-    copy_vertex(p.corner[k], v, double(v.win.x + ox[k]), gl_y(v.win.y + oy[k], fb_height_));
-  }
-  p.tri[0][0] = 2, p.tri[0][1] = 1, p.tri[0][2] = 0;
-  p.tri[1][0] = 3, p.tri[1][1] = 1, p.tri[1][2] = 2;
-  p.triangles = 2;
-  p.front = front;
-  p.offset = false;
-  p.polygon = false;
-  p.provoking = provoking;
   Coverage& cov = p.coverage;
   cov.kind = Coverage::Kind::kLine;
   cov.a = half_width;

@@ -102,6 +102,8 @@ class PrimAssembler {
   void aliased_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
   void smooth_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
   void multisample_line(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking, PieceSink& sink);
+  void line_rectangle(const PrimVertex& a, const PrimVertex& b, const float (&ox)[4], const float (&oy)[4], bool front,
+                      std::uint32_t provoking);
   void point_piece(const PrimVertex& p, bool front, std::uint32_t provoking, PieceSink& sink);
   void flat_colors(Piece& p) const;
   float unfilled_offset(const PrimVertex (&w)[3], float det) const;
