@@ -102,33 +102,25 @@ std::vector<std::unique_ptr<FbConfig>> make_configs(Display* dpy, int screen) {
   std::vector<std::unique_ptr<FbConfig>> out;
   std::vector<std::pair<XVisualInfo, platform::ImageLayout>> visuals = usable_visuals(dpy, screen);
   if (visuals.empty()) return out;
+  auto add = [&](const platform::SurfaceConfig& surface) {
+    auto c = std::make_unique<FbConfig>();
+    const std::size_t k = out.size();
+    c->id = int(k) + 1 + screen * 1000;
+    c->screen = screen;
+    std::tie(c->visual, c->layout) = visuals[k < visuals.size() ? k : 0];
+    c->surface = surface;
+    // GLX pixmaps are single-buffered (GLX 1.4 section 3.3.5).
+    c->drawable_types = GLX_WINDOW_BIT | GLX_PBUFFER_BIT | (surface.double_buffered ? 0 : GLX_PIXMAP_BIT);
+    out.push_back(std::move(c));
+  };
   const int depth_stencil[][2] = {{24, 8}, {24, 0}, {16, 0}, {0, 0}};
   for (bool doubled : {true, false}) {
     for (auto [depth, stencil] : depth_stencil) {
-      for (int accum : {16, 0}) {
-        auto c = std::make_unique<FbConfig>();
-        const std::size_t k = out.size();
-        c->id = int(k) + 1 + screen * 1000;
-        c->screen = screen;
-        std::tie(c->visual, c->layout) = visuals[k < visuals.size() ? k : 0];
-        c->surface = {depth, stencil, accum, doubled};
-        // GLX pixmaps are single-buffered (GLX 1.4 section 3.3.5).
-        c->drawable_types = GLX_WINDOW_BIT | GLX_PBUFFER_BIT | (doubled ? 0 : GLX_PIXMAP_BIT);
-        out.push_back(std::move(c));
-      }
+      for (int accum : {16, 0}) add({depth, stencil, accum, doubled});
     }
   }
   for (bool doubled : {true, false}) {
-    for (int accum : {0, 16}) {
-      auto c = std::make_unique<FbConfig>();
-      const std::size_t k = out.size();
-      c->id = int(k) + 1 + screen * 1000;
-      c->screen = screen;
-      std::tie(c->visual, c->layout) = visuals[k < visuals.size() ? k : 0];
-      c->surface = {24, 8, accum, doubled, 4};
-      c->drawable_types = GLX_WINDOW_BIT | GLX_PBUFFER_BIT | (doubled ? 0 : GLX_PIXMAP_BIT);
-      out.push_back(std::move(c));
-    }
+    for (int accum : {0, 16}) add({24, 8, accum, doubled, 4});
   }
   if (visuals.size() < out.size()) {
     for (auto& c : out) std::tie(c->visual, c->layout) = visuals[0];

@@ -40,7 +40,7 @@ GLenum buffer_error(GLenum b) {
 void configure_buffers(GlContext& c, bool double_buffered, int accum_bits, int samples) {
   c.double_buffered = double_buffered;
   c.ms = {};
-  c.ms.count = samples;
+  c.ms.count = samples > 0 ? 4 : 0;  // the one count the configurations offer
   // Section 4.2.1: initially the back buffer of a double-buffered visual, else the front.
   c.buffers.draw_buffer = c.buffers.read_buffer = double_buffered ? GL_BACK : GL_FRONT;
   // Mesa allocates a 16-bit signed accumulation buffer for any accumulation bits asked for.

@@ -213,7 +213,7 @@ struct MultisampleState {
 /// (fb.color) holds the resolved colours, the samples' mean, brought up to date for the tiles
 /// drawn since (`unresolved`) before anything reads it (settle_clears, present).
 struct SampleBuffers {
-  int count = 0;  ///< GL_SAMPLES of the visual; 0: no multisample buffer
+  int count = 0;  ///< GL_SAMPLES of the visual: 4, or 0 without a multisample buffer
   int width = 0, height = 0;  ///< the framebuffer size the buffers were made for
   std::vector<ColorBuffer> color;                  ///< per sample
   std::vector<std::vector<float>> depth;           ///< samples 1 to count - 1
@@ -494,8 +494,8 @@ void for_listed_tiles(GlContext& c, const Fn& fn) {
 }
 
 /// Sets what the context's visual gives it (buffers.cpp): a double-buffered colour buffer
-/// (GL_DRAW_BUFFER and GL_READ_BUFFER start as GL_BACK), accumulation bits per channel and
-/// samples per pixel (0: no multisample buffer).
+/// (GL_DRAW_BUFFER and GL_READ_BUFFER start as GL_BACK), accumulation bits per channel and a
+/// multisample buffer (of 4 samples, the one count there is) when `samples` is above 0.
 void configure_buffers(GlContext& c, bool double_buffered, int accum_bits, int samples = 0);
 /// Whether drawing writes colour (GL_DRAW_BUFFER is not GL_NONE).
 bool draws_color(const GlContext& c);

@@ -164,8 +164,8 @@ void clear_box_to(GlContext& c, bool color, bool depth, bool stencil, int x0, in
   auto rows = [&](std::size_t begin, std::size_t end) {
     for (std::size_t y = begin; y < end; ++y) {
       const std::size_t row = y * std::size_t(c.fb.width);
-      if (whole_pixels && (!stencil || write == 0xffu)) {  // row by row, as words (every sample of a
-        const std::size_t a = row + std::size_t(x0), n = std::size_t(x1 - x0);  // multisample buffer)
+      if (whole_pixels && (!stencil || write == 0xffu)) {  // the row at once (colour as words)
+        const std::size_t a = row + std::size_t(x0), n = std::size_t(x1 - x0);
         if (color) std::fill_n(reinterpret_cast<std::uint32_t*>(c.fb.color.data()) + a, n, word);
         if (depth) std::fill_n(c.fb.depth.data() + a, n, d);
         if (stencil) std::memset(c.fb.stencil.data() + a, s, n);
@@ -191,11 +191,8 @@ void clear_box(GlContext& c, bool color, bool depth, bool stencil, int x0, int y
 }
 
 // Every sample of the multisample buffer cleared as the colour buffer and sample 0's depth
-// and stencil (the framebuffer's) were: the same box, values and write masks.
-void clear_samples(GlContext& c, GLbitfield mask, bool scissored, int x0, int y0, int x1, int y1) {
-  const bool color = (mask & GL_COLOR_BUFFER_BIT) && draws_color(c);
-  const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0;
-  const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0;
+// and stencil (the framebuffer's) were: the same buffers, box, values and write masks.
+void clear_samples(GlContext& c, bool color, bool depth, bool stencil, bool scissored, int x0, int y0, int x1, int y1) {
   if (!color && !depth && !stencil) return;
   // The depth sample 0 holds: the box's clamped value, or the whole buffer's stored one.
   const float d = scissored ? std::clamp(float(c.raster.clear_depth), 0.0f, 1.0f) : c.tiles.clear_depth;
@@ -254,22 +251,21 @@ void exec::Clear(GlContext& c, GLbitfield mask) {
     else clear_color(c);
     exchange_color_buffers(c);
   }
+  const bool color = (mask & GL_COLOR_BUFFER_BIT) && draws_color(c);
+  const bool depth = (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0;
+  const bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0;
   if (scissored) {
-    clear_box(c, (mask & GL_COLOR_BUFFER_BIT) && draws_color(c),
-              (mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0,
-              (mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0, x0, y0, x1, y1);
+    clear_box(c, color, depth, stencil, x0, y0, x1, y1);
     if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
-    if (c.ms.count > 0) clear_samples(c, mask, true, x0, y0, x1, y1);
+    if (c.ms.count > 0) clear_samples(c, color, depth, stencil, true, x0, y0, x1, y1);
     return;
   }
   c.tiles.ahead.clear();
-  if ((mask & GL_COLOR_BUFFER_BIT) && draws_color(c)) clear_color(c);
-  if ((mask & GL_DEPTH_BUFFER_BIT) && c.raster.depth_mask && c.depth_bits > 0) {
-    clear_depth(c);
-  }
-  if ((mask & GL_STENCIL_BUFFER_BIT) && c.stencil_bits > 0) clear_stencil(c);
+  if (color) clear_color(c);
+  if (depth) clear_depth(c);
+  if (stencil) clear_stencil(c);
   if (mask & GL_ACCUM_BUFFER_BIT) clear_accum(c);
-  if (c.ms.count > 0) clear_samples(c, mask, false, 0, 0, 0, 0);
+  if (c.ms.count > 0) clear_samples(c, color, depth, stencil, false, 0, 0, 0, 0);
   // Started last: the clears above would wait for it.
   if (!c.tiles.ahead.empty()) c.pipeline->clear_ahead(c.fb, shadelab::PipelineContext::PendingClears::kColor, c.tiles.ahead);
 }

@@ -38,13 +38,6 @@ namespace {
 // from the top.
 constexpr std::array<glm::vec2, 4> kPositions4{{{0.375f, 0.875f}, {0.875f, 0.625f}, {0.125f, 0.375f}, {0.625f, 0.125f}}};
 
-glm::vec2 sample_position(int count, int k) {
-  if (count == 4) return kPositions4[std::size_t(k)];
-  // Any other count (no visual offers one today): the samples along the pixel's diagonal.
-  const float t = (float(k) + 0.5f) / float(count);
-  return {t, 1.0f - t};
-}
-
 // Whether the alpha test passes an alpha of 1 (compared as the pipeline compares, in 8 bits).
 bool passes_at_one(const AlphaTestState& a) {
   const long ref = std::lround(std::clamp(a.ref, 0.0f, 1.0f) * 255.0f);
@@ -95,7 +88,7 @@ void enter_sample(GlContext& c, int k) {
   exchange_sample(c, k);
   c.ms.active = k;
   c.ms.shift = glm::vec2(0.0f);
-  if (c.multisample.enabled) c.ms.shift = glm::vec2(0.5f) - sample_position(c.ms.count, k);
+  if (c.multisample.enabled) c.ms.shift = glm::vec2(0.5f) - kPositions4[std::size_t(k)];
 }
 
 void leave_sample(GlContext& c) {
@@ -161,22 +154,14 @@ void resolve_samples(GlContext& c) {
   for (std::size_t t = 0; t < s.unresolved.size(); ++t) {
     if (s.unresolved[t]) c.tiles.list.push_back(int(t)), s.unresolved[t] = 0;
   }
-  const unsigned n = unsigned(s.count);
   const std::size_t width = std::size_t(c.fb.width);
+  const std::uint8_t *a = s.color[0].data(), *b = s.color[1].data(), *d = s.color[2].data(), *e = s.color[3].data();
   for_listed_tiles(c, [&](int x0, int y0, int x1, int y1) {
+    std::uint8_t* out = c.fb.color.data();
     for (int y = y0; y < y1; ++y) {
       const std::size_t begin = (std::size_t(y) * width + std::size_t(x0)) * 4, end = (std::size_t(y) * width + std::size_t(x1)) * 4;
-      std::uint8_t* out = c.fb.color.data();
-      if (n == 4) {  // the one count the configurations offer, in a loop the compiler vectorizes
-        const std::uint8_t *a = s.color[0].data(), *b = s.color[1].data(), *d = s.color[2].data(), *e = s.color[3].data();
-        for (std::size_t i = begin; i < end; ++i) out[i] = std::uint8_t((unsigned(a[i]) + b[i] + d[i] + e[i] + 2u) >> 2);
-        continue;
-      }
-      for (std::size_t i = begin; i < end; ++i) {
-        unsigned sum = n / 2;  // rounded to the nearest
-        for (const ColorBuffer& color : s.color) sum += color[i];
-        out[i] = std::uint8_t(sum / n);
-      }
+      // The four samples' mean, rounded to the nearest, in a loop the compiler vectorizes.
+      for (std::size_t i = begin; i < end; ++i) out[i] = std::uint8_t((unsigned(a[i]) + b[i] + d[i] + e[i] + 2u) >> 2);
     }
   });
   std::swap(c.tiles.list, s.list);
