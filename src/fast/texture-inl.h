@@ -126,6 +126,80 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 /// a + w (b - a), the reference's lerp.
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
+/// The texels at i and i + 1 of each lane's row (whose first texel is `row`; `row_border`:
+/// lanes whose row is the border's), wrapped as fetch wraps them, in byte units. Where every
+/// lane's two texels are neighbours in memory (inside the level, not wrapped: all but the
+/// lanes within half a texel of a wrapped or clamped edge), each lane's pair is read as one
+/// 64-bit word, half the loads of two gathers.
+HWY_INLINE void texel_pair(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> row, hn::Mask<DIB> row_border,
+                           hn::Vec<DIB> i0, hn::Mask<DIB> border0, hn::Vec<DIB> i1, hn::Mask<DIB> border1,
+                           VB first[4], VB second[4]) {
+  const DIB di;
+  const DUB du;
+  const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
+  border0 = hn::Or(border0, row_border), border1 = hn::Or(border1, row_border);
+  const auto index0 = hn::IfThenZeroElse(border0, hn::Add(row, i0));
+  hn::Vec<DUB> w0, w1;
+#if HWY_TARGET != HWY_SCALAR
+  const auto pairs = hn::AndNot(hn::Or(border0, border1), hn::Eq(i1, hn::Add(i0, hn::Set(di, 1))));
+  if (hn::AllTrue(di, pairs)) {
+    const hn::Half<DIB> dh;
+    const hn::Repartition<std::uint64_t, DUB> dq;
+    const hn::Repartition<std::int64_t, DUB> dqi;
+    const auto* quads = reinterpret_cast<const std::uint64_t*>(words);
+    const auto four = hn::Set(dqi, 4);  // GatherOffset's byte offsets: four a texel
+    const auto lo = hn::GatherOffset(dq, quads, hn::Mul(hn::PromoteTo(dqi, hn::LowerHalf(dh, index0)), four));
+    const auto hi = hn::GatherOffset(dq, quads, hn::Mul(hn::PromoteTo(dqi, hn::UpperHalf(dh, index0)), four));
+    w0 = hn::ConcatEven(du, hn::BitCast(du, hi), hn::BitCast(du, lo));
+    w1 = hn::ConcatOdd(du, hn::BitCast(du, hi), hn::BitCast(du, lo));
+  } else
+#endif
+  {
+    w0 = hn::GatherIndex(du, words, index0);
+    w1 = hn::GatherIndex(du, words, hn::IfThenZeroElse(border1, hn::Add(row, i1)));
+  }
+  const bool any0 = !hn::AllFalse(di, border0), any1 = !hn::AllFalse(di, border1);
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) {
+    first[c] = channel(w0, c), second[c] = channel(w1, c);
+    if (any0) first[c] = hn::IfThenElse(hn::RebindMask(DB(), border0), hn::Set(DB(), tp.border[c]), first[c]);
+    if (any1) second[c] = hn::IfThenElse(hn::RebindMask(DB(), border1), hn::Set(DB(), tp.border[c]), second[c]);
+  }
+}
+
+/// The reference's bilinear slice of a 2D, cube or 3D colour level at texels (i, j) to
+/// (i + 1, j + 1) of image k, weighted by a across and b down: fetch's texels, each index
+/// wrapped once (a depth texture's compared with `ref` by fetch).
+HWY_INLINE void bilinear_slice(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j,
+                               hn::Vec<DIB> k, VB a, VB b, VB ref, VB out[4]) {
+  const DIB di;
+  const auto one = hn::Set(di, 1);
+  if (tp.depth_texture) {  // depth comparisons per texel: fetch's
+    VB t00[4], t10[4], t01[4], t11[4];
+    fetch(tp, l, i, j, k, t00, ref);
+    fetch(tp, l, hn::Add(i, one), j, k, t10, ref);
+    fetch(tp, l, i, hn::Add(j, one), k, t01, ref);
+    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), k, t11, ref);
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
+    return;
+  }
+  const hn::Mask<DIB> none = hn::FirstN(di, 0);
+  hn::Mask<DIB> bi0 = none, bi1 = none, bj0 = none, bj1 = none, bk = none;
+  const auto i0 = wrap_index(i, l.width, tp.wrap_s, bi0), i1 = wrap_index(hn::Add(i, one), l.width, tp.wrap_s, bi1);
+  auto j0 = wrap_index(j, l.height, tp.wrap_t, bj0), j1 = wrap_index(hn::Add(j, one), l.height, tp.wrap_t, bj1);
+  if (tp.three_d || tp.cube) {  // k: a 3D level's image (wrapped), a cube map's face
+    const auto image = hn::Mul(tp.three_d ? wrap_index(k, l.depth, tp.wrap_r, bk) : k, hn::Set(di, l.height));
+    j0 = hn::Add(image, j0), j1 = hn::Add(image, j1);
+  }
+  const auto width = hn::Set(di, l.width);
+  VB t00[4], t10[4], t01[4], t11[4];
+  texel_pair(tp, l, hn::Mul(j0, width), hn::Or(bj0, bk), i0, bi0, i1, bi1, t00, t10);
+  texel_pair(tp, l, hn::Mul(j1, width), hn::Or(bj1, bk), i0, bi0, i1, bi1, t01, t11);
+  #pragma GCC unroll 4
+  for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
+}
+
 /// texture.cpp's nearest_index: the clamps and mirrored repeat (u >= 0 there) keep a nearest
 /// index in the level; repeat wraps it and clamp to border takes the border outside.
 HWY_INLINE bool keeps_nearest_in_level(TextureWrap w) {
@@ -172,15 +246,7 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
     for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
     return;
   }
-  auto slice = [&](hn::Vec<DIB> kk, VB res[4]) {  // the reference's bilinear slice
-    VB t00[4], t10[4], t01[4], t11[4];
-    fetch(tp, l, i, j, kk, t00, r);
-    fetch(tp, l, hn::Add(i, one), j, kk, t10, r);
-    fetch(tp, l, i, hn::Add(j, one), kk, t01, r);
-    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), kk, t11, r);
-    #pragma GCC unroll 4
-    for (int c = 0; c < 4; ++c) res[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
-  };
+  auto slice = [&](hn::Vec<DIB> kk, VB res[4]) { bilinear_slice(tp, l, i, j, kk, a, b, r, res); };
   if (!tp.three_d) return slice(k, out);
   const VB ww = hn::Sub(w, hn::Set(db, 0.5f)), fw = hn::Floor(ww);
   k = all_linear ? hn::ConvertTo(di, fw) : hn::IfThenElse(li, hn::ConvertTo(di, fw), k);
