@@ -39,6 +39,26 @@ void for_pixels(GlContext& c, const Fn& fn) {
   else fn(0, n);
 }
 
+// Each of the n values at `p` becomes (value & keep) | set: a clear through a write mask, in
+// 64-bit words.
+template <class T>
+void masked_fill(T* p, std::size_t n, T set, T keep) {
+  static_assert(8 % sizeof(T) == 0);
+  constexpr std::size_t kPerWord = 8 / sizeof(T);
+  std::uint64_t set_word = 0, keep_word = 0;
+  for (std::size_t k = 0; k < kPerWord; ++k) {
+    set_word |= std::uint64_t(set) << (8 * sizeof(T) * k), keep_word |= std::uint64_t(keep) << (8 * sizeof(T) * k);
+  }
+  std::size_t i = 0;
+  for (; i + kPerWord <= n; i += kPerWord) {
+    std::uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    w = (w & keep_word) | set_word;
+    std::memcpy(p + i, &w, 8);
+  }
+  for (; i < n; ++i) p[i] = T((p[i] & keep) | set);
+}
+
 // Lists in c.tiles.list the tiles a clear must write: all of them, or with `same_value`
 // (the clear writes the value the tiles flagged `flag` hold) those not flagged. Every tile
 // is then flagged; a colour clear also marks every tile changed, since the caller may have
@@ -112,13 +132,13 @@ void clear_color(GlContext& c) {
     return;
   }
   settle_clears(c);
+  std::array<std::uint8_t, 4> set{}, keep{};
+  for (std::size_t k = 0; k < 4; ++k) set[k] = mask[k] ? px[k] : 0, keep[k] = mask[k] ? 0 : 0xff;
+  std::uint32_t set_word, keep_word;
+  std::memcpy(&set_word, set.data(), 4);
+  std::memcpy(&keep_word, keep.data(), 4);
   for_pixels(c, [&](std::size_t begin, std::size_t end) {
-    std::uint8_t* color = c.fb.color.data();
-    for (std::size_t i = begin * 4; i < end * 4; i += 4) {
-      for (std::size_t k = 0; k < 4; ++k) {
-        if (mask[k]) color[i + k] = px[k];
-      }
-    }
+    masked_fill(reinterpret_cast<std::uint32_t*>(c.fb.color.data()) + begin, end - begin, set_word, keep_word);
   });
   for (std::uint8_t& f : c.tiles.flags) f = TileMap::kChanged | (f & TileMap::kDepthClear);
 }
@@ -139,10 +159,9 @@ void clear_stencil(GlContext& c) {
   std::uint8_t write = std::uint8_t(c.raster.stencil_write_mask & 0xffu);
   std::uint8_t value = std::uint8_t(c.raster.clear_stencil & 0xff);
   for_pixels(c, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      std::uint8_t& s = c.fb.stencil[i];
-      s = std::uint8_t((s & ~write) | (value & write));
-    }
+    std::uint8_t* stencil = c.fb.stencil.data();
+    if (write == 0xffu) return void(std::memset(stencil + begin, value, end - begin));
+    masked_fill(stencil + begin, end - begin, std::uint8_t(value & write), std::uint8_t(~write));
   });
 }
 
