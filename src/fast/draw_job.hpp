@@ -76,7 +76,15 @@ struct VaryingLayout {
 /// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
 /// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with GL_FUNC_ADD,
 /// BlendState::source_over).
-enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal };
+enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend };
+
+/// Whether a kernel tests depth (GL_LESS or GL_LEQUAL, writing it); kOpaque and kBlend draw
+/// without the depth test.
+constexpr bool kernel_tests_depth(BlockKernel k) { return k != BlockKernel::kOpaque && k != BlockKernel::kBlend; }
+/// Whether a kernel blends (source alpha over the framebuffer) rather than writing its colours.
+constexpr bool kernel_blends(BlockKernel k) {
+  return k == BlockKernel::kBlendLess || k == BlockKernel::kBlendLequal || k == BlockKernel::kBlend;
+}
 
 /// How a texture unit of a draw samples, decided once per draw (plan.cpp) for the SIMD
 /// samplers (texture-inl.h): the texture's levels and parameters as sample_texture reads them.

@@ -43,15 +43,14 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled || f.alpha_one) {
     return BlockKernel::kGeneral;
   }
-  if (p.scalar_fragments || p.phong || !f.depth_test || !f.depth_write || !(less || lequal) ||
-      !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
+  if (p.scalar_fragments || p.phong || !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
     return BlockKernel::kGeneral;
   }
+  if (f.blend.enabled && !f.blend.source_over()) return BlockKernel::kGeneral;
+  if (!f.depth_test) return f.blend.enabled ? BlockKernel::kBlend : BlockKernel::kOpaque;  // 2D drawing
+  if (!f.depth_write || !(less || lequal)) return BlockKernel::kGeneral;
   if (!f.blend.enabled) return less ? BlockKernel::kOpaqueLess : BlockKernel::kOpaqueLequal;
-  if (f.blend.source_over()) {
-    return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
-  }
-  return BlockKernel::kGeneral;
+  return less ? BlockKernel::kBlendLess : BlockKernel::kBlendLequal;
 }
 
 bool uses_mipmaps(TextureFilter f) { return f != TextureFilter::kNearest && f != TextureFilter::kLinear; }

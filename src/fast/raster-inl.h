@@ -257,22 +257,28 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
                              GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
                              const VD b1[kRows], VB f0, VB f1, VB z) {
   constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
-  constexpr bool kBlend = kKernel == BlockKernel::kBlendLess || kKernel == BlockKernel::kBlendLequal;
+  constexpr bool kBlend = kernel_blends(kKernel);
   const DF df;
   const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
-  float* depth[kRows];
   std::uint32_t* color[kRows];
   #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) {
-    depth[r] = target.depth + first + std::size_t(r) * target.stride;
-    color[r] = target.color + first + std::size_t(r) * target.stride;
+  for (int r = 0; r < kRows; ++r) color[r] = target.color + first + std::size_t(r) * target.stride;
+  unsigned passed = bits;
+  if constexpr (kernel_tests_depth(kKernel)) {
+    float* depth[kRows];
+    #pragma GCC unroll 4
+    for (int r = 0; r < kRows; ++r) depth[r] = target.depth + first + std::size_t(r) * target.stride;
+    const VB stored = load_rows(df, depth);
+    passed = block_bits(hn::And(block_mask(bits), kLequal ? hn::Le(z, stored) : hn::Lt(z, stored)));
+    counts.fragments += unsigned(std::popcount(bits));
+    counts.shaded += unsigned(std::popcount(passed));
+    if (!passed) return;
+    store_rows(df, z, passed, depth);
+  } else {
+    (void)z;
+    counts.fragments += unsigned(std::popcount(bits));
+    counts.shaded += unsigned(std::popcount(bits));
   }
-  const VB stored = load_rows(df, depth);
-  const unsigned passed = block_bits(hn::And(block_mask(bits), kLequal ? hn::Le(z, stored) : hn::Lt(z, stored)));
-  counts.fragments += unsigned(std::popcount(bits));
-  counts.shaded += unsigned(std::popcount(passed));
-  if (!passed) return;
-  store_rows(df, z, passed, depth);
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);

@@ -59,9 +59,13 @@ bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
 // A triangle drawn by a kernel, unless its tile's depth bound hides it.
 template <BlockKernel kKernel>
 void raster_kernel(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
-  if (behind_tile<kKernel>(job, t, ws)) return;
-  raster_path<Path::kInterior, kKernel>(job, t, ws, true);
-  ws.bound.known = false;  // depth written
+  if constexpr (!kernel_tests_depth(kKernel)) {
+    return raster_path<Path::kInterior, kKernel>(job, t, ws, true);
+  } else {
+    if (behind_tile<kKernel>(job, t, ws)) return;
+    raster_path<Path::kInterior, kKernel>(job, t, ws, true);
+    ws.bound.known = false;  // depth written
+  }
 }
 
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
@@ -76,6 +80,8 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kOpaqueLequal: return raster_kernel<BlockKernel::kOpaqueLequal>(job, t, ws);
       case BlockKernel::kBlendLess: return raster_kernel<BlockKernel::kBlendLess>(job, t, ws);
       case BlockKernel::kBlendLequal: return raster_kernel<BlockKernel::kBlendLequal>(job, t, ws);
+      case BlockKernel::kOpaque: return raster_kernel<BlockKernel::kOpaque>(job, t, ws);
+      case BlockKernel::kBlend: return raster_kernel<BlockKernel::kBlend>(job, t, ws);
       case BlockKernel::kGeneral: break;
     }
     raster_general(job, t, ws, true);

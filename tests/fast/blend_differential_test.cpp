@@ -1,8 +1,9 @@
 // The fast pipeline against the reference with GL 1.4's blending and stencil state: any blend
 // equation, factors (the constant colour's too) apart for alpha or not, a constant colour,
 // and the wrapping stencil operations (RandomDraws::blend_extras), on 1, 2 and 3 threads,
-// every SIMD target, deferred; every equation and factor pair on the SIMD path alone; and the
-// blend kernels chosen only for the state they implement. Coverage, depth and stencil
+// every SIMD target, deferred; every equation and factor pair on the SIMD path alone; the
+// blend kernels chosen only for the state they implement; and drawing without the depth test
+// (2D programs: the kernels kOpaque and kBlend), opaque and blended, on every target. Coverage, depth and stencil
 // identical, colours within 1/255, the same fragments counted as passing.
 #include <gtest/gtest.h>
 
@@ -145,11 +146,12 @@ TEST(FastBlend, DeferredDrawsKeepTheirBlendState) {
 
 // The kernel make_plan chooses for a draw the kernels could take (depth kLess written, every
 // channel written, nothing else on) with the blend state `b`.
-fast::BlockKernel kernel_for(const BlendState& b) {
+fast::BlockKernel kernel_for(const BlendState& b, bool depth_test = true) {
   Framebuffer fb;
   fb.resize(8, 8);
   FragmentState frag;
   frag.blend = b;
+  frag.depth_test = depth_test;
   ShadeState shade;
   shade.lighting = false;
   VertexInput in;
@@ -184,6 +186,54 @@ TEST(FastBlend, BlendKernelsOnlyForSourceOver) {
   EXPECT_EQ(kernel_for(b), BlockKernel::kBlendLess);
   EXPECT_EQ(kernel_for(BlendState{true, BlendFactor::kConstantAlpha, BlendFactor::kOneMinusConstantAlpha}),
             BlockKernel::kGeneral);
+  // Without the depth test: the depth-less kernels, for the same blend states only.
+  EXPECT_EQ(kernel_for(over, false), BlockKernel::kBlend);
+  EXPECT_EQ(kernel_for(BlendState{}, false), BlockKernel::kOpaque);
+  b = over;
+  b.equation = BlendEquation::kSubtract;
+  EXPECT_EQ(kernel_for(b, false), BlockKernel::kGeneral);
+}
+
+// Draws without the depth test, opaque or blended source over (what the kernels kOpaque and
+// kBlend draw), over random framebuffers whose depth they must leave alone: the same colours,
+// depth and counts as the reference on every SIMD target, triangles inside the framebuffer and
+// across its edges alike.
+TEST(FastBlend, DrawsWithoutTheDepthTestMatchTheReferenceOnEveryTarget) {
+  PipelineContext two(2);
+  const BlendState over{true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
+  for (const std::string& target : fast::available_simd_targets()) {
+    ASSERT_TRUE(fast::force_simd_target(target));
+    std::uint64_t shaded = 0;
+    for (unsigned seed = 9800; seed < 9800 + random_cases(60); ++seed) {
+      RandomDraws random(seed);
+      glm::ivec2 size = random.size();
+      Framebuffer initial = random.framebuffer(size);
+      std::vector<RandomDraw> draws;
+      for (int i = random.integer(1, 4); i > 0; --i) {
+        draws.push_back(random.draw(size));
+        RandomDraw& d = draws.back();
+        simd_only(d);
+        d.frag.depth_test = false;
+        d.frag.depth_write = seed % 2 == 0;  // no depth written either way
+        d.frag.blend = i % 2 ? over : BlendState{};
+        d.shade.fog.enabled = false;
+        d.frag.alpha_test.enabled = false;
+        d.frag.logic_op.enabled = false;
+        d.frag.stipple.enabled = false;
+        d.frag.scissor.enabled = false;
+        for (bool& m : d.frag.color_mask) m = true;
+      }
+      Result ref = render(initial, draws, nullptr);
+      Result fast = render(initial, draws, &two);
+      const std::string diff = compare_buffers(fast.fb, ref.fb);
+      EXPECT_EQ(diff, "") << target << " seed " << seed;
+      EXPECT_EQ(fast.stats.pixels_shaded, ref.stats.pixels_shaded) << target << " seed " << seed;
+      if (!diff.empty()) break;
+      shaded += ref.stats.pixels_shaded;
+    }
+    EXPECT_GT(shaded, 10000u) << target;
+  }
+  fast::force_simd_target("");
 }
 
 }  // namespace
