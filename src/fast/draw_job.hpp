@@ -76,14 +76,24 @@ struct VaryingLayout {
 /// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
 /// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with GL_FUNC_ADD,
 /// BlendState::source_over).
-enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend };
+/// kTextured: one texture unit, any filter, environment but GL_COMBINE, depth test, alpha test
+/// and blend, without fog, stencil, logic op, per-pixel lighting or masks (DrawPlan::texture_unit).
+enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
+                                        kTextured };
 
-/// Whether a kernel tests depth (GL_LESS or GL_LEQUAL, writing it); kOpaque and kBlend draw
-/// without the depth test.
-constexpr bool kernel_tests_depth(BlockKernel k) { return k != BlockKernel::kOpaque && k != BlockKernel::kBlend; }
+/// Whether a kernel is one of the untextured ones that test depth (GL_LESS or GL_LEQUAL,
+/// writing it); kOpaque and kBlend draw without the depth test.
+constexpr bool kernel_tests_depth(BlockKernel k) {
+  return k == BlockKernel::kOpaqueLess || k == BlockKernel::kOpaqueLequal || k == BlockKernel::kBlendLess ||
+         k == BlockKernel::kBlendLequal;
+}
 /// Whether a kernel blends (source alpha over the framebuffer) rather than writing its colours.
 constexpr bool kernel_blends(BlockKernel k) {
   return k == BlockKernel::kBlendLess || k == BlockKernel::kBlendLequal || k == BlockKernel::kBlend;
+}
+/// Whether a kernel writes its colours opaque from the byte planes (TrianglePlanes::bytes).
+constexpr bool kernel_opaque(BlockKernel k) {
+  return k == BlockKernel::kOpaqueLess || k == BlockKernel::kOpaqueLequal || k == BlockKernel::kOpaque;
 }
 
 /// How a texture unit of a draw samples, decided once per draw (plan.cpp) for the SIMD
@@ -149,6 +159,7 @@ struct DrawPlan {
   int user_plane_count = 0;
   bool coverage = false;         ///< smooth lines or points: alpha times their coverage
   BlockKernel kernel = BlockKernel::kGeneral;
+  int texture_unit = 0;  ///< kTextured's unit
   LightingSetup lighting;
 };
 

@@ -38,8 +38,19 @@ bool writes_color(const FragmentState& f) {
 
 void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, to); }
 
+// The kTextured kernel's draws: one unit textured, its environment not GL_COMBINE, every
+// channel written, nothing but the depth and alpha tests and the blend on.
+bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
+  int units = 0;
+  for (const TexturePlan& tp : p.texture) units += tp.texture ? 1 : 0;
+  return units == 1 && !p.combine && !p.fog && !p.phong && !p.scalar_fragments && !p.lane_masks &&
+         !f.logic_op.enabled && !f.stencil.enabled && !f.alpha_one && f.color_mask[0] && f.color_mask[1] &&
+         f.color_mask[2] && f.color_mask[3];
+}
+
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
+  if (p.textured) return single_unit_textured(p, f) ? BlockKernel::kTextured : BlockKernel::kGeneral;
   if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled || f.alpha_one) {
     return BlockKernel::kGeneral;
   }
@@ -158,6 +169,9 @@ void make_plan(DrawJob& job) {
                ((frag.point.smooth || (frag.point.multisample && !frag.point.sprite)) &&
                 (!in.points.empty() || (point_edges && !in.triangles.empty())));
   p.kernel = p.coverage ? BlockKernel::kGeneral : kernel_for(p, frag);
+  for (int u = 0; u < kMaxTextureUnits; ++u) {
+    if (p.texture[u].texture) p.texture_unit = u;
+  }
   p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);

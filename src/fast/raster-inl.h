@@ -290,6 +290,51 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
   }
 }
 
+// A block of a triangle wholly inside the framebuffer by the kTextured kernel: simd_block's
+// operations for its state (the depth test first, the colours of the lanes it passes, the
+// alpha test, then depth and colour written), block_color's for one unit.
+HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                               GroupCounts& counts, int x, int y, unsigned bits, const VD e[kRows][3],
+                               const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, VB z) {
+  const DF df;
+  const FragmentState& fs = *job.frag;
+  const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
+  float* depth[kRows];
+  std::uint32_t* color[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    depth[r] = fs.depth_test ? target.depth + first + std::size_t(r) * target.stride : nullptr;
+    color[r] = target.color + first + std::size_t(r) * target.stride;
+  }
+  counts.fragments += unsigned(std::popcount(bits));
+  unsigned passed = bits;
+  if (fs.depth_test) passed = block_bits(hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, depth))));
+  if (!passed) return;
+  if (!planes.ready) set_up_planes(job, t, planes);
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  const int unit = job.plan.texture_unit;
+  const TexturePlan& tp = job.plan.texture[unit];
+  // textured_color's for one unit (no GL_COMBINE, logic op or per-pixel lighting).
+  const bool alpha_replaced =
+      tp.env == TextureEnvMode::kReplace && tp.format != TextureFormat::kLuminance && tp.format != TextureFormat::kRgb;
+  const bool exact = job.plan.exact_colors && !planes.exact && !planes.uniform && !alpha_replaced;
+  Rgba c = vertex_color(t, planes, w, false);
+  if (exact && !t.flat) exact_color(t, planes, w, 3, c, false);
+  VB texel[4];
+  sample_block(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed), texel);
+  texture_env(tp, c.c, texel);
+  c.clamped = false;
+  if (planes.has_secondary) {
+    #pragma GCC unroll 3
+    for (int k = 0; k < 3; ++k) c.c[k] = hn::Add(c.c[k], varying(t, planes, w, planes.secondary[k]));
+  }
+  if (job.plan.alpha_test) passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, c.c[3]);
+  counts.shaded += unsigned(std::popcount(passed));
+  if (!passed) return;
+  if (fs.depth_test && fs.depth_write) store_rows(df, z, passed, depth);
+  write_colors(job, c, passed, color);
+}
+
 // Reference per-fragment operations for the covered lanes of one row (stencil, capture,
 // textures...).
 inline void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, int x, int y,
@@ -359,6 +404,8 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
+  } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kTextured) {
+    textured_block(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z);
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
     kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else {

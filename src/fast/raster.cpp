@@ -82,6 +82,10 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kBlendLequal: return raster_kernel<BlockKernel::kBlendLequal>(job, t, ws);
       case BlockKernel::kOpaque: return raster_kernel<BlockKernel::kOpaque>(job, t, ws);
       case BlockKernel::kBlend: return raster_kernel<BlockKernel::kBlend>(job, t, ws);
+      case BlockKernel::kTextured:
+        raster_path<Path::kInterior, BlockKernel::kTextured>(job, t, ws, true);
+        if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
+        return;
       case BlockKernel::kGeneral: break;
     }
     raster_general(job, t, ws, true);

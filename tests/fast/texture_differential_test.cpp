@@ -8,7 +8,8 @@
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
 // RGBA texture, unlit, opaque) the pictures must be identical: the samplers must pick and
 // filter the same texels in the same arithmetic. Otherwise colours within 1/255, as for every
-// other state.
+// other state. One unit's draws take the textured kernel, two units' and GL_COMBINE's the
+// general block: both are drawn, and the kernel is chosen for the state it implements only.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <sstream>
 
 #include "differential.hpp"
+#include "fast/plan.hpp"
 #include "fast/simd_targets.hpp"
 
 namespace shadelab {
@@ -324,6 +326,51 @@ TEST(TextureDifferential, FloorThroughEveryLevelOnAnOddHeight) {
     std::sort(colours.begin(), colours.end());
     EXPECT_GT(std::unique(colours.begin(), colours.end()) - colours.begin(), 40) << "filter " << filter;
   }
+}
+
+// The kernel make_plan chooses for a textured draw: kTextured for one unit whose environment is
+// not GL_COMBINE, with or without the depth test, alpha test and blend (the scenes above draw
+// through it on every target); the general path with a second unit, GL_COMBINE, fog, the
+// stencil test or a logic op.
+TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
+  Texture texture;
+  TextureLevel level;
+  level.width = level.height = 2;
+  level.rgba.assign(16, 128);
+  texture.levels.push_back(level);
+  texture.min_filter = TextureFilter::kLinear;
+  auto kernel = [&](auto&& change) {
+    Framebuffer fb;
+    fb.resize(8, 8);
+    FragmentState frag;
+    ShadeState shade;
+    shade.lighting = false;
+    shade.textures[0].texture = &texture;
+    change(frag, shade);
+    VertexInput in;
+    fast::DrawJob job;
+    job.fb = &fb;
+    job.frag = &frag;
+    job.shade = &shade;
+    job.in = &in;
+    fast::make_plan(job);
+    return job.plan.kernel;
+  };
+  using fast::BlockKernel;
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState&) {}), BlockKernel::kTextured);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) {
+              f.depth_test = false;
+              f.alpha_test = {true, CompareFunc::kGreater, 0.5f};
+              f.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
+            }),
+            BlockKernel::kTextured);
+  EXPECT_EQ(kernel([&](FragmentState&, ShadeState& s) { s.textures[2].texture = &texture; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.textures[0].env = TextureEnvMode::kCombine; }),
+            BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.stencil.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.color_mask[1] = false; }), BlockKernel::kGeneral);
 }
 
 }  // namespace
