@@ -2,7 +2,7 @@
 # shadelab against Mesa on the same programs, on this machine (docs/performance.md).
 #
 #   bench/run.sh [--frames N] [--rounds R] [--quick] [--no-softpipe] [--no-sweeps]
-#                [--no-corpus | --corpus-only] [--out DIR]
+#                [--no-corpus | --corpus-only] [--corpus-targets "best avx2"] [--out DIR]
 #
 # Builds the benchmark programs into build/, then runs each scene in turn with Mesa's
 # llvmpipe, Mesa's softpipe and libshadelab-gl (the same GL 1.x source, bench/gl_bench.c), and
@@ -17,10 +17,13 @@
 # Then the corpus (bench/corpus.c: the kinds of program people run, one scene each): each
 # scene with llvmpipe and with shadelab, each at the better of 1 and all threads, the ratio,
 # whether the images agree, and whether any fragment left the SIMD path (SHADELAB_STATS); its
-# last line names the worst ratio. The script fails if a corpus scene's images disagree or
-# shadelab drew fragments on the scalar reference path.
+# last line names the worst ratio. The corpus runs once at the best SIMD target the machine
+# has and once with AVX2 forced (the target of machines without AVX-512; --corpus-targets
+# names others: best, avx512, avx2, sse4, ssse3, scalar), a table each. The script fails if a
+# corpus scene's images disagree or shadelab drew fragments on the scalar reference path.
 # SHADELAB_BUILD_DIR chooses the build folder (default build); SHADELAB_SIMD (avx512, avx2,
-# sse4, ssse3, scalar) the instruction set shadelab's SIMD code runs.
+# sse4, ssse3, scalar) the instruction set shadelab's SIMD code runs (the corpus then runs at
+# that target alone).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,6 +33,8 @@ softpipe=1
 sweeps=1
 quick=0
 corpus=1
+corpus_targets="best avx2"
+[ -z "${SHADELAB_SIMD:-}" ] || corpus_targets=$SHADELAB_SIMD
 scenes=1
 out=out/bench
 while [ $# -gt 0 ]; do
@@ -41,8 +46,9 @@ while [ $# -gt 0 ]; do
     --no-sweeps) sweeps=0; shift ;;
     --no-corpus) corpus=0; shift ;;
     --corpus-only) scenes=0; sweeps=0; shift ;;
+    --corpus-targets) corpus_targets="$2"; shift 2 ;;
     --out) out="$2"; shift 2 ;;
-    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -126,13 +132,22 @@ best_shadelab() {
   smaller "$(SHADELAB_THREADS=1 median "$@")" "$(SHADELAB_THREADS=$cores median "$@")"
 }
 corpus_status=0
+# run_corpus TARGET: the corpus table with shadelab's SIMD code at TARGET ("best": the
+# machine's best), into $out/corpus.csv (best) or $out/corpus-TARGET.csv.
 run_corpus() {
-  local C=$B scene l m r agree stats ref worst=0 worst_scene="" ratios=()
+  local C=$B scene l m r agree stats ref worst=0 worst_scene="" ratios=() csv="$out/corpus.csv" ran
+  local simd="" saved=${SHADELAB_SIMD:-}
+  [ "$1" = best ] || { simd=$1; csv="$out/corpus-$1.csv"; }
+  export SHADELAB_SIMD=$simd
+  rm -f "$out/corpus-target.stats"
+  SHADELAB_STATS="$out/corpus-target.stats" "$C/bench_corpus_shadelab" empty --frames 1 --warmup 0 >/dev/null
+  ran=$(sed -n 's/.*target=\([^ ]*\).*/\1/p' "$out/corpus-target.stats" | head -1)
+  rm -f "$out/corpus-target.stats"
   echo
-  echo "corpus (bench/corpus.c), 1920x1080; each side at the better of 1 and $cores threads;"
-  echo "scalar = fragments shadelab drew on the reference path (SHADELAB_STATS), 0 expected"
+  echo "corpus (bench/corpus.c), 1920x1080, shadelab's SIMD target $1 ($ran); each side at the better"
+  echo "of 1 and $cores threads; scalar = fragments shadelab drew on the reference path (SHADELAB_STATS), 0 expected"
   printf '%-22s %12s %12s %16s  %-14s %s\n' scene "llvmpipe ms" "shadelab ms" "shadelab/llvmpipe" images scalar
-  echo "scene,llvmpipe_ms,shadelab_ms,ratio,within2,reference_fragments" > "$out/corpus.csv"
+  echo "scene,llvmpipe_ms,shadelab_ms,ratio,within2,reference_fragments" > "$csv"
   for scene in $("$C/bench_corpus_mesa" --list); do
     local ls=() ms=() rs=() k a b
     for ((k = 0; k < rounds; ++k)); do
@@ -150,17 +165,20 @@ run_corpus() {
     agree=$($build/tests/gl-conformance/gl_compare "$out/corpus-$scene.mesa.png" "$out/corpus-$scene.shadelab.png" \
               --name "$scene" --diff "$out/corpus-$scene.diff.png" | sed -n 's/^RESULT .*within2=\([0-9.]*\).* \(PASS\|FAIL\)$/\1% \2/p')
     printf '%-22s %12s %12s %16s  %-14s %s\n' "$scene" "$l" "$m" "$r" "$agree" "$ref"
-    echo "$scene,$l,$m,$r,${agree%%%*},$ref" >> "$out/corpus.csv"
+    echo "$scene,$l,$m,$r,${agree%%%*},$ref" >> "$csv"
     [ "$ref" = 0 ] || corpus_status=1
     case "$agree" in *PASS) ;; *) corpus_status=1 ;; esac
     ratios+=("$r")
     if awk -v a="$r" -v b="$worst" 'BEGIN { exit !(a + 0 > b + 0) }'; then worst=$r; worst_scene=$scene; fi
   done
-  echo "corpus: median ratio $(median_of "${ratios[@]}"), worst $worst ($worst_scene), $(printf '%s\n' "${ratios[@]}" | awk '$1 >= 1' | wc -l) of ${#ratios[@]} scenes at or above llvmpipe's time"
+  echo "corpus at $1 ($ran): median ratio $(median_of "${ratios[@]}"), worst $worst ($worst_scene), $(printf '%s\n' "${ratios[@]}" | awk '$1 >= 1' | wc -l) of ${#ratios[@]} scenes at or above llvmpipe's time"
   [ "$corpus_status" = 0 ] || echo "corpus: FAILED: images disagree or fragments left the SIMD path (above)"
+  export SHADELAB_SIMD=$saved
 }
 
-[ "$corpus" = 0 ] || run_corpus
+if [ "$corpus" = 1 ]; then
+  for target in $corpus_targets; do run_corpus "$target"; done
+fi
 
 [ "$sweeps" = 1 ] || exit "$corpus_status"
 
