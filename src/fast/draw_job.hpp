@@ -71,13 +71,13 @@ struct VaryingLayout {
 /// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster-inl.h):
 /// the general one, which reads the fragment state at every block, or one compiled for the
 /// usual state, with nothing left to decide per block (no fog, scissor, stipple, alpha test
-/// or logic op): the depth test kLess or kLequal writing
-/// depth, every colour channel written, flat or Gouraud colours, and the colour either
-/// replacing what is there (kOpaque...) or blended over it by its alpha (kBlend...: glBlendFunc
-/// GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with GL_FUNC_ADD,
-/// BlendState::source_over).
-/// kTextured: one texture unit, any filter, environment but GL_COMBINE, depth test, alpha test
-/// and blend, without fog, stencil, logic op, per-pixel lighting or masks (DrawPlan::texture_unit).
+/// or logic op): the depth test kLess or kLequal writing depth (kOpaqueLess...), or no depth
+/// test (kOpaque, kBlend: 2D drawing), every colour channel written, flat or Gouraud colours,
+/// and the colour either replacing what is there (kOpaque...) or blended over it by its alpha
+/// (kBlend...: glBlendFunc GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with
+/// GL_FUNC_ADD, BlendState::source_over). kTextured: one texture unit (DrawPlan::texture_unit),
+/// any filter and environment but GL_COMBINE, any depth test, alpha test and blend, without
+/// fog, stencil, logic op, per-pixel lighting or masks; these it reads per block.
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
                                         kTextured };
 

@@ -51,7 +51,7 @@ bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
   if (p.textured) return single_unit_textured(p, f) ? BlockKernel::kTextured : BlockKernel::kGeneral;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || p.textured || f.stencil.enabled || f.alpha_one) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || f.stencil.enabled || f.alpha_one) {
     return BlockKernel::kGeneral;
   }
   if (p.scalar_fragments || p.phong || !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
