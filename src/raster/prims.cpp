@@ -185,9 +185,16 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
   if (!line_quad(a.win, b.win, clamp_size(frag_.line.width), fb_height_, q)) return;
   Piece& p = piece_;
   for (int k = 0; k < 4; ++k) {
-    p.corner[k].x = double(q.corner[k].x) / double(kSubpixelOne);
-    p.corner[k].y = double(q.corner[k].y) / double(kSubpixelOne);
-    line_corner(p.corner[k], a, b, q.t[k]);
+    PieceCorner& c = p.corner[k];
+    c.x = double(q.corner[k].x) / double(kSubpixelOne);
+    c.y = double(q.corner[k].y) / double(kSubpixelOne);
+    // The corners across the line from each other lie at the same t: interpolated once.
+    const int same = k > 0 && q.t[k] == q.t[k - 1] ? k - 1 : k == 3 && q.t[3] == q.t[0] ? 0 : -1;
+    if (same < 0) {
+      line_corner(c, a, b, q.t[k]);
+    } else {
+      c.z = p.corner[same].z, c.inv_w = p.corner[same].inv_w, c.attr = p.corner[same].attr;
+    }
   }
   p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
   p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
@@ -316,6 +323,14 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
     for (int k = 0; k < 4; ++k) {
       copy_vertex(p.corner[k], v, double(q.corner[k].x) / double(kSubpixelOne),
                   double(q.corner[k].y) / double(kSubpixelOne));
+    }
+    if (q.corner[1].x - q.corner[0].x == kSubpixelOne) {
+      // A one-pixel square (the usual point): one triangle, its legs 1.5 pixels along the
+      // square's bottom and left edges, holds the pixel's centre (0.5 from both legs and the
+      // hypotenuse) and no other pixel's: half the set-up and binning of two triangles.
+      p.corner[1].x = p.corner[0].x + 1.5;
+      p.corner[2].x = p.corner[0].x, p.corner[2].y = p.corner[0].y + 1.5;
+      p.triangles = 1;
     }
   }
   flat_colors(p);
