@@ -56,7 +56,12 @@ void masked_fill(T* p, std::size_t n, T set, T keep) {
     w = (w & keep_word) | set_word;
     std::memcpy(p + i, &w, 8);
   }
-  for (; i < n; ++i) p[i] = T((p[i] & keep) | set);
+  for (; i < n; ++i) {  // through memcpy too: a caller's colour buffer need not be aligned
+    T v;
+    std::memcpy(&v, p + i, sizeof(T));
+    v = T((v & keep) | set);
+    std::memcpy(p + i, &v, sizeof(T));
+  }
 }
 
 // Lists in c.tiles.list the tiles a clear must write: all of them, or with `same_value`
