@@ -44,16 +44,15 @@ float nearest_depth(const TriSetup& t) {
 }
 
 // Whether the tile's largest depth shows that no fragment of this large triangle passes the
-// kernel's depth test (kLess / kLequal), so that it need not be rasterized in this tile
-// (a draw whose fragments are counted is always rasterized).
-template <BlockKernel kKernel>
-bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+// depth test GL_LESS (or with `lequal` GL_LEQUAL), so that it need not be rasterized in this
+// tile (a draw whose fragments are counted is always rasterized). Only for draws without the
+// stencil test, whose operations would count the fragments that fail.
+bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool lequal) {
   TileDepthBound& b = ws.bound;
   if (!b.on || job.counted || (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) < kBoundedArea) return false;
   if (!b.known) b = {true, true, tile_max_depth(ws.target)};
   const float z = nearest_depth(t);
-  constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
-  return kLequal ? z > b.max : z >= b.max;
+  return lequal ? z > b.max : z >= b.max;
 }
 
 // A triangle drawn by a kernel, unless its tile's depth bound hides it.
@@ -62,10 +61,20 @@ void raster_kernel(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   if constexpr (!kernel_tests_depth(kKernel)) {
     return raster_path<Path::kInterior, kKernel>(job, t, ws, true);
   } else {
-    if (behind_tile<kKernel>(job, t, ws)) return;
+    if (behind_tile(job, t, ws, kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal)) return;
     raster_path<Path::kInterior, kKernel>(job, t, ws, true);
     ws.bound.known = false;  // depth written
   }
+}
+
+// A triangle drawn by the textured kernel: hidden behind its tile's depth bound (alpha-tested
+// layers drawn front to back), or drawn.
+void raster_textured(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
+  const FragmentState& f = *job.frag;
+  const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
+  if (f.depth_test && (less || lequal) && behind_tile(job, t, ws, lequal)) return;
+  raster_path<Path::kInterior, BlockKernel::kTextured>(job, t, ws, true);
+  if (f.depth_test && f.depth_write) ws.bound.known = false;
 }
 
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
@@ -73,7 +82,7 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
                         (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
   if (job.plan.scalar_fragments) {
-    raster_scalar(job, t, ws, interior);
+    raster_scalar(job, t, ws, interior);  // never in a tile buffer: no depth bound to keep
   } else if (interior) {
     switch (job.plan.kernel) {
       case BlockKernel::kOpaqueLess: return raster_kernel<BlockKernel::kOpaqueLess>(job, t, ws);
@@ -82,10 +91,7 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kBlendLequal: return raster_kernel<BlockKernel::kBlendLequal>(job, t, ws);
       case BlockKernel::kOpaque: return raster_kernel<BlockKernel::kOpaque>(job, t, ws);
       case BlockKernel::kBlend: return raster_kernel<BlockKernel::kBlend>(job, t, ws);
-      case BlockKernel::kTextured:
-        raster_path<Path::kInterior, BlockKernel::kTextured>(job, t, ws, true);
-        if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
-        return;
+      case BlockKernel::kTextured: return raster_textured(job, t, ws);
       case BlockKernel::kGeneral: break;
     }
     raster_general(job, t, ws, true);

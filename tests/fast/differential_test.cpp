@@ -147,8 +147,9 @@ TEST(FastDifferential, DeferredDrawsMatchTheReference) {
 // A wall of small quads at random depths, then large layers at the wall's farthest depth,
 // or a few float steps in front of it, flat or sloped, with GL_LESS or GL_LEQUAL, opaque or
 // blended, over tiles with pending clears (drawn in tile buffers, where the tile's largest
-// depth lets a layer that fails everywhere go undrawn: raster.cpp's behind_tile). Layers
-// that pass anywhere must be drawn there: the same as the reference.
+// depth lets a layer that fails everywhere go undrawn: raster.cpp's behind_tile), untextured
+// or textured (alpha-tested or not). Layers that pass anywhere must be drawn there: the same
+// as the reference.
 TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
   PipelineContext ctx(2);
   ctx.set_deferred(true);
@@ -195,6 +196,18 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
         if (random.chance(0.5)) zs[random.integer(0, 3)] = farthest + 0.1f;
       }
       quad(layer, {-1.0f, -1.0f}, {1.0f, 1.0f}, zs, random.color(0.2f));
+      if (random.chance(0.4)) {  // textured (the textured kernel), alpha-tested sometimes
+        layer.texture = std::make_shared<Texture>();
+        TextureLevel level;
+        level.width = level.height = 2;
+        for (int k = 0; k < 16; ++k) level.rgba.push_back(std::uint8_t(random.integer(0, 255)));
+        layer.texture->levels.push_back(level);
+        layer.texture->min_filter = layer.texture->mag_filter =
+            random.chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
+        layer.texcoords = {{0, 0, 0, 1}, {3, 0, 0, 1}, {3, 3, 0, 1}, {0, 3, 0, 1}};
+        layer.shade.textures[0].texture = layer.texture.get();
+        if (random.chance(0.5)) layer.frag.alpha_test = {true, CompareFunc::kGreater, 0.4f};
+      }
       draws.push_back(layer);
     }
     const int columns = (size.x + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize;
