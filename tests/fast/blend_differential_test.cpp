@@ -147,21 +147,12 @@ TEST(FastBlend, DeferredDrawsKeepTheirBlendState) {
 // The kernel make_plan chooses for a draw the kernels could take (depth kLess written, every
 // channel written, nothing else on) with the blend state `b`.
 fast::BlockKernel kernel_for(const BlendState& b, bool depth_test = true) {
-  Framebuffer fb;
-  fb.resize(8, 8);
   FragmentState frag;
   frag.blend = b;
   frag.depth_test = depth_test;
   ShadeState shade;
   shade.lighting = false;
-  VertexInput in;
-  fast::DrawJob job;
-  job.fb = &fb;
-  job.frag = &frag;
-  job.shade = &shade;
-  job.in = &in;
-  fast::make_plan(job);
-  return job.plan.kernel;
+  return test::planned_kernel(frag, shade);
 }
 
 TEST(FastBlend, BlendKernelsOnlyForSourceOver) {

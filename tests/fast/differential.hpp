@@ -10,10 +10,25 @@
 #include <string>
 #include <vector>
 
+#include "fast/plan.hpp"
 #include "random_draws.hpp"
 #include "shadelab/pipeline.hpp"
 
 namespace shadelab::test {
+
+/// The block kernel make_plan chooses for a triangle draw with this state (8 x 8 pixels).
+inline fast::BlockKernel planned_kernel(const FragmentState& frag, const ShadeState& shade) {
+  Framebuffer fb;
+  fb.resize(8, 8);
+  VertexInput in;
+  fast::DrawJob job;
+  job.fb = &fb;
+  job.frag = &frag;
+  job.shade = &shade;
+  job.in = &in;
+  fast::make_plan(job);
+  return job.plan.kernel;
+}
 
 struct Result {
   Framebuffer fb;

@@ -18,7 +18,6 @@
 #include <sstream>
 
 #include "differential.hpp"
-#include "fast/plan.hpp"
 #include "fast/simd_targets.hpp"
 
 namespace shadelab {
@@ -340,21 +339,12 @@ TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
   texture.levels.push_back(level);
   texture.min_filter = TextureFilter::kLinear;
   auto kernel = [&](auto&& change) {
-    Framebuffer fb;
-    fb.resize(8, 8);
     FragmentState frag;
     ShadeState shade;
     shade.lighting = false;
     shade.textures[0].texture = &texture;
     change(frag, shade);
-    VertexInput in;
-    fast::DrawJob job;
-    job.fb = &fb;
-    job.frag = &frag;
-    job.shade = &shade;
-    job.in = &in;
-    fast::make_plan(job);
-    return job.plan.kernel;
+    return test::planned_kernel(frag, shade);
   };
   using fast::BlockKernel;
   EXPECT_EQ(kernel([](FragmentState&, ShadeState&) {}), BlockKernel::kTextured);
