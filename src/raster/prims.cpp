@@ -65,6 +65,19 @@ void affine(const PieceCorner& p0, const PieceCorner& p1, const PieceCorner& p2,
 
 double gl_y(float down, int fb_height) { return double(fb_height) - double(down); }
 
+// A line's or point's piece before its corners: two triangles fanned from corner 0 (0 1 2,
+// 0 2 3), not a polygon's (no offset, no stipple), no coverage yet.
+void start_piece(Piece& p, bool front, std::uint32_t provoking) {
+  p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
+  p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
+  p.triangles = 2;
+  p.front = front;
+  p.offset = false;
+  p.polygon = false;
+  p.provoking = provoking;
+  p.coverage = Coverage{};
+}
+
 // Mesa's SATURATE: NaN passes through.
 float saturate(float v) { return v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v); }
 
@@ -184,6 +197,7 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
   RasterQuad q;
   if (!line_quad(a.win, b.win, clamp_size(frag_.line.width), fb_height_, q)) return;
   Piece& p = piece_;
+  start_piece(p, front, provoking);
   for (int k = 0; k < 4; ++k) {
     PieceCorner& c = p.corner[k];
     c.x = double(q.corner[k].x) / double(kSubpixelOne);
@@ -196,14 +210,6 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
       c.z = p.corner[same].z, c.inv_w = p.corner[same].inv_w, c.attr = p.corner[same].attr;
     }
   }
-  p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
-  p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
-  p.triangles = 2;
-  p.front = front;
-  p.offset = false;
-  p.polygon = false;
-  p.provoking = provoking;
-  p.coverage = Coverage{};
   flat_colors(p);
   sink.piece(p);
 }
@@ -217,14 +223,9 @@ void PrimAssembler::line_rectangle(const PrimVertex& a, const PrimVertex& b, con
     const PrimVertex& v = k < 2 ? a : b;
     copy_vertex(p.corner[k], v, double(v.win.x + ox[k]), gl_y(v.win.y + oy[k], fb_height_));
   }
+  start_piece(p, front, provoking);
   p.tri[0][0] = 2, p.tri[0][1] = 1, p.tri[0][2] = 0;
   p.tri[1][0] = 3, p.tri[1][1] = 1, p.tri[1][2] = 2;
-  p.triangles = 2;
-  p.front = front;
-  p.offset = false;
-  p.polygon = false;
-  p.provoking = provoking;
-  p.coverage = Coverage{};
 }
 
 // GL 1.5 section 3.4.4's multisampled line: the rectangle of the line's width centred on the
@@ -285,14 +286,7 @@ void PrimAssembler::point_piece(const PrimVertex& v, bool front, std::uint32_t p
     if (!(size > 0.0f)) return;
   }
   Piece& p = piece_;
-  p.tri[0][0] = 0, p.tri[0][1] = 1, p.tri[0][2] = 2;
-  p.tri[1][0] = 0, p.tri[1][1] = 2, p.tri[1][2] = 3;
-  p.triangles = 2;
-  p.front = front;
-  p.offset = false;
-  p.polygon = false;
-  p.provoking = provoking;
-  p.coverage = Coverage{};
+  start_piece(p, front, provoking);
   if (ps.sprite || ps.smooth || ps.multisample) {
     // A square around the point: a sprite's side is its size; Mesa's smooth point has radius 1
     // up to size 2, else size / 2, and discards the fragments beyond the radius; a
