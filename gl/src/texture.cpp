@@ -182,6 +182,7 @@ const Texture* complete_texture(TextureObject& t) {
   }
   // The environment follows the base level's format; a depth texture's, its depth mode.
   t.texture.depth = t.images[base].format.depth;
+  t.texture.wide = t.images[base].format.wide();  // filtered in float, as llvmpipe does
   t.texture.format = t.texture.depth ? t.depth_mode : t.images[base].format.base;
   return &t.texture;
 }

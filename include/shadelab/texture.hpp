@@ -90,6 +90,9 @@ struct Texture {
   /// 1), intensity (v, v, v, v), alpha (0, 0, 0, v)). r is s, t, r's r after the division by q,
   /// clamped to [0, 1] (llvmpipe's for unorm depth formats).
   bool depth = false;
+  /// Some component is kept with more than 8 bits (GL_RGBA16 and the like; the levels hold it
+  /// rounded to 8): llvmpipe filters such a texture in float, not in 8 bits.
+  bool wide = false;
   bool compare = false;
   TextureCompare compare_func = TextureCompare::kLequal;
   TextureFilter min_filter = TextureFilter::kNearestMipmapLinear;  ///< GL's default
@@ -186,9 +189,16 @@ float texture_rho2(const Texture& texture, const TextureDerivatives& d);
 /// *_MIPMAP_NEAREST, magnification where lambda <= 0). `str` must be finite (finite_texcoord).
 glm::vec4 sample_texture(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
 /// sample_texture's texel in byte units (0 to 255), before its one scaling by 1/255: texels
-/// are read as their bytes, filtered by linear interpolations a + w (b - a) (along s, then
-/// t, then r, then between two levels), the border colour taken times 255.
+/// are read as their bytes, filtered by linear interpolations (along s, then t, then r, then
+/// between two levels), the border colour taken times 255. Where eight_bit_filtering holds,
+/// as llvmpipe's 8-bit sampler: positions in 8.8 fixed point, each interpolation in 256ths
+/// rounded to a byte; otherwise in float, a + w (b - a).
 glm::vec4 sample_texture_bytes(const Texture& texture, glm::vec3 str, float rho2, float unit_bias = 0.0f);
+
+/// Whether a texture is filtered as llvmpipe's 8-bit sampler filters it (lp_bld_sample_aos.c,
+/// chosen by lp_build_sample_soa_code): a colour texture whose texels fit 8-bit unorm (not
+/// `wide`) and whose wrap modes on every axis sampled are GL_REPEAT or GL_CLAMP_TO_EDGE.
+bool eight_bit_filtering(const Texture& texture);
 
 /// r OP d of a depth comparison.
 inline bool depth_compare(TextureCompare op, float r, float d) {

@@ -122,6 +122,10 @@ struct TexturePlan {
   float border[4] = {};               ///< the border colour in byte units
   TextureEnvMode env = TextureEnvMode::kModulate;
   TextureFormat format = TextureFormat::kRgba;
+  /// eight_bit_filtering: linear filtering in llvmpipe's 8-bit arithmetic, on RGBA8 words.
+  bool eight_bit = false;
+  /// The base level's sides are powers of two (repeat masks the 8-bit filter's indices).
+  bool pot_s = false, pot_t = false, pot_r = false;
   float env_color[4] = {};
   TextureCombine combine;  ///< env kCombine's
 };

@@ -94,6 +94,9 @@ TexturePlan texture_plan(const TextureUnit& unit) {
   tp.env = unit.env;
   tp.combine = unit.combine;
   tp.format = t->format;
+  tp.eight_bit = eight_bit_filtering(*t);
+  auto pot = [](int n) { return n > 0 && (n & (n - 1)) == 0; };
+  tp.pot_s = pot(base.width), tp.pot_t = pot(base.height), tp.pot_r = pot(base.depth);
   return tp;
 }
 

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "fast/block-inl.h"
 #include "fast/texcoord-inl.h"
@@ -126,21 +127,18 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 /// a + w (b - a), the reference's lerp.
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
-/// The texels at i and i + 1 of each lane's row (whose first texel is `row`; `row_border`:
-/// lanes whose row is the border's), wrapped as fetch wraps them, in byte units. Where every
-/// lane's two texels are neighbours in memory (inside the level, not wrapped: all but the
-/// lanes within half a texel of a wrapped or clamped edge), each lane's pair is read as one
-/// 64-bit word, half the loads of two gathers.
-HWY_INLINE void texel_pair(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> row, hn::Mask<DIB> row_border,
-                           hn::Vec<DIB> i0, hn::Mask<DIB> border0, hn::Vec<DIB> i1, hn::Mask<DIB> border1,
-                           VB first[4], VB second[4]) {
-  const DIB di;
+/// The RGBA8 words at wrapped indices i0 and i1 of each lane's row (whose first texel is
+/// `row`); lanes marked in `border0` or `border1` read the level's first texel there (the
+/// caller puts the border in). Where every lane's two texels are neighbours in memory (inside
+/// the level, not wrapped: all but the lanes within half a texel of a wrapped or clamped edge),
+/// each lane's pair is read as one 64-bit word, half the loads of two gathers.
+HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB> i0, hn::Mask<DIB> border0,
+                            hn::Vec<DIB> i1, hn::Mask<DIB> border1, hn::Vec<DUB>& w0, hn::Vec<DUB>& w1) {
   const DUB du;
   const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
-  border0 = hn::Or(border0, row_border), border1 = hn::Or(border1, row_border);
   const auto index0 = hn::IfThenZeroElse(border0, hn::Add(row, i0));
-  hn::Vec<DUB> w0, w1;
 #if HWY_TARGET != HWY_SCALAR
+  const DIB di;
   const auto pairs = hn::AndNot(hn::Or(border0, border1), hn::Eq(i1, hn::Add(i0, hn::Set(di, 1))));
   if (hn::AllTrue(di, pairs)) {
     const hn::Half<DIB> dh;
@@ -159,6 +157,16 @@ HWY_INLINE void texel_pair(const TexturePlan& tp, const TextureLevel& l, hn::Vec
     w0 = hn::GatherIndex(du, words, index0);
     w1 = hn::GatherIndex(du, words, hn::IfThenZeroElse(border1, hn::Add(row, i1)));
   }
+}
+
+/// texel_words' texels in byte units, the border's where `border0`, `border1` or `row_border`.
+HWY_INLINE void texel_pair(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> row, hn::Mask<DIB> row_border,
+                           hn::Vec<DIB> i0, hn::Mask<DIB> border0, hn::Vec<DIB> i1, hn::Mask<DIB> border1,
+                           VB first[4], VB second[4]) {
+  const DIB di;
+  border0 = hn::Or(border0, row_border), border1 = hn::Or(border1, row_border);
+  hn::Vec<DUB> w0, w1;
+  texel_words(l, row, i0, border0, i1, border1, w0, w1);
   const bool any0 = !hn::AllFalse(di, border0), any1 = !hn::AllFalse(di, border1);
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
@@ -259,12 +267,196 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   for (int c = 0; c < 4; ++c) out[c] = lerp(near[c], far[c], cw);
 }
 
+/// texture.cpp's round_to_int (cvtps2dq): nearest, ties to even; outside the int range and NaN
+/// the integer indefinite (x86's conversion itself; elsewhere its result made).
+HWY_INLINE hn::Vec<DIB> round_to_int(VB x) {
+#if HWY_TARGET <= HWY_AVX3
+  return hn::Vec<DIB>{_mm512_cvtps_epi32(x.raw)};
+#elif HWY_TARGET == HWY_AVX2
+  return hn::Vec<DIB>{_mm256_cvtps_epi32(x.raw)};
+#elif HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
+  return hn::Vec<DIB>{_mm_cvtps_epi32(x.raw)};
+#else
+  const DB db;
+  const DIB di;
+  const MB inside = hn::And(hn::Ge(x, hn::Set(db, -2147483648.0f)), hn::Lt(x, hn::Set(db, 2147483648.0f)));
+  const auto indefinite = hn::Set(di, std::numeric_limits<std::int32_t>::min());
+  return hn::IfThenElse(hn::RebindMask(di, inside), hn::NearestInt(hn::IfThenElseZero(inside, x)), indefinite);
+#endif
+}
+
+/// texture.cpp's fixed_taps: the 8-bit filter's two texels along an axis of `size` texels and
+/// the second's weight in 256ths.
+HWY_INLINE void fixed_taps(VB s, int size, TextureWrap wrap, bool pot, hn::Vec<DIB>& i0, hn::Vec<DIB>& i1,
+                           hn::Vec<DIB>& weight) {
+  const DB db;
+  const DIB di;
+  const bool npot_repeat = wrap == TextureWrap::kRepeat && !pot;
+  const VB scaled = hn::Mul(npot_repeat ? hn::Sub(s, hn::Floor(s)) : s, hn::Set(db, float(size)));
+  const auto fixed = hn::Sub(round_to_int(hn::Mul(scaled, hn::Set(db, 256.0f))), hn::Set(di, 128));
+  const auto i = hn::ShiftRight<8>(fixed), last = hn::Set(di, size - 1);
+  weight = hn::And(fixed, hn::Set(di, 255));
+  if (wrap == TextureWrap::kClampToEdge) {
+    i0 = hn::Min(hn::Max(i, hn::Zero(di)), last);
+    i1 = hn::Min(hn::Max(hn::Add(i, hn::Set(di, 1)), hn::Zero(di)), last);
+  } else if (pot) {
+    i0 = hn::And(i, last), i1 = hn::And(hn::Add(i, hn::Set(di, 1)), last);
+  } else {
+    i0 = hn::Min(hn::IfThenElse(hn::Lt(i, hn::Zero(di)), last, i), last);
+    i1 = hn::IfThenZeroElse(hn::Eq(i0, last), hn::Add(i0, hn::Set(di, 1)));
+  }
+}
+
+// RGBA8 texels between the 8-bit filter's lerps: each byte kept in a 16-bit lane, red and blue
+// in the halves of one 32-bit lane, green and alpha in another's, so that one operation serves
+// two channels (the scalar target: a 32-bit lane a channel). Weights in 256ths, per lane.
+#if HWY_TARGET == HWY_SCALAR
+struct Bytes8 {
+  hn::Vec<DIB> c[4];
+};
+using Weight8 = hn::Vec<DIB>;
+HWY_INLINE Weight8 weight8(hn::Vec<DIB> w) { return w; }
+HWY_INLINE Bytes8 unpack8(hn::Vec<DUB> words) {
+  Bytes8 b;
+  for (int c = 0; c < 4; ++c) b.c[c] = hn::BitCast(DIB(), hn::And(hn::ShiftRightSame(words, 8 * c), hn::Set(DUB(), 0xffu)));
+  return b;
+}
+HWY_INLINE Bytes8 lerp8(const Bytes8& a, const Bytes8& b, Weight8 w) {
+  const DIB di;
+  Bytes8 r;
+  for (int c = 0; c < 4; ++c) {
+    r.c[c] = hn::Add(a.c[c], hn::ShiftRight<8>(hn::Add(hn::Mul(w, hn::Sub(b.c[c], a.c[c])), hn::Set(di, 128))));
+  }
+  return r;
+}
+HWY_INLINE Bytes8 select8(hn::Mask<DUB> m, const Bytes8& a, const Bytes8& b) {
+  Bytes8 r;
+  for (int c = 0; c < 4; ++c) r.c[c] = hn::IfThenElse(hn::RebindMask(DIB(), m), a.c[c], b.c[c]);
+  return r;
+}
+HWY_INLINE void bytes_to_float(const Bytes8& v, VB out[4]) {
+  for (int c = 0; c < 4; ++c) out[c] = hn::ConvertTo(DB(), v.c[c]);
+}
+#else
+using DW = hn::Repartition<std::uint16_t, DUB>;
+struct Bytes8 {
+  hn::Vec<DW> rb, ga;
+};
+using Weight8 = hn::Vec<DW>;
+HWY_INLINE Weight8 weight8(hn::Vec<DIB> w) {
+  const auto u = hn::BitCast(DUB(), w);
+  return hn::BitCast(DW(), hn::Or(u, hn::ShiftLeft<16>(u)));
+}
+HWY_INLINE Bytes8 unpack8(hn::Vec<DUB> words) {
+  const auto bytes = hn::Set(DUB(), 0x00ff00ffu);
+  return {hn::BitCast(DW(), hn::And(words, bytes)), hn::BitCast(DW(), hn::And(hn::ShiftRight<8>(words), bytes))};
+}
+/// texture.cpp's lerp8 in 16-bit lanes: the products wrap at 16 bits, and the bits they keep
+/// hold the byte the rounded quotient adds, modulo 256; the result is a byte.
+HWY_INLINE Bytes8 lerp8(const Bytes8& a, const Bytes8& b, Weight8 w) {
+  const DW dw;
+  auto lerp = [&](hn::Vec<DW> x, hn::Vec<DW> y) {
+    const auto p = hn::Add(hn::Mul(hn::Sub(y, x), w), hn::Set(dw, 128));
+    return hn::And(hn::Add(x, hn::ShiftRight<8>(p)), hn::Set(dw, 0xff));
+  };
+  return {lerp(a.rb, b.rb), lerp(a.ga, b.ga)};
+}
+HWY_INLINE Bytes8 select8(hn::Mask<DUB> m, const Bytes8& a, const Bytes8& b) {
+  const DUB du;
+  auto pick = [&](hn::Vec<DW> x, hn::Vec<DW> y) {
+    return hn::BitCast(DW(), hn::IfThenElse(m, hn::BitCast(du, x), hn::BitCast(du, y)));
+  };
+  return {pick(a.rb, b.rb), pick(a.ga, b.ga)};
+}
+HWY_INLINE void bytes_to_float(const Bytes8& v, VB out[4]) {
+  const DUB du;
+  const DIB di;
+  const auto low = hn::Set(du, 0xffffu);
+  const auto rb = hn::BitCast(du, v.rb), ga = hn::BitCast(du, v.ga);
+  out[0] = hn::ConvertTo(DB(), hn::BitCast(di, hn::And(rb, low)));
+  out[1] = hn::ConvertTo(DB(), hn::BitCast(di, hn::And(ga, low)));
+  out[2] = hn::ConvertTo(DB(), hn::BitCast(di, hn::ShiftRight<16>(rb)));
+  out[3] = hn::ConvertTo(DB(), hn::BitCast(di, hn::ShiftRight<16>(ga)));
+}
+#endif
+
+/// One level's texels filtered by the 8-bit sampler (texture.cpp's sample_level where
+/// eight_bit_filtering holds): `linear` lanes by fixed_taps and lerp8 along s, t and r, the
+/// others the nearest texel (sample_level's index, wrapped by repeat or clamp to edge).
+HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB t, VB r, MB linear) {
+  const DB db;
+  const DIB di;
+  const DUB du;
+  const TextureLevel& l = tp.texture->levels[std::size_t(level)];
+  const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
+  const auto face = tp.cube ? hn::ConvertTo(di, r) : hn::Zero(di);  // a cube map's r: the face
+  const hn::Mask<DIB> none = hn::FirstN(di, 0);
+  Bytes8 nearest;
+  if (!all_linear) {  // sample_level's nearest index, wrapped as fetch wraps it
+    hn::Mask<DIB> unused = none;
+    auto index = [&](VB c, int size, TextureWrap wrap) {
+      const auto i = hn::ConvertTo(di, hn::Floor(texel_coord(c, size, wrap)));
+      return wrap_index(wrap == TextureWrap::kRepeat ? i : hn::Min(i, hn::Set(di, size - 1)), size, wrap, unused);
+    };
+    const auto i = index(s, l.width, tp.wrap_s);
+    auto row = tp.one_d ? hn::Zero(di) : index(t, l.height, tp.wrap_t);
+    if (tp.three_d) row = hn::Add(hn::Mul(index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
+    else if (tp.cube) row = hn::Add(hn::Mul(face, hn::Set(di, l.height)), row);
+    const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
+    nearest = unpack8(hn::GatherIndex(du, words, hn::Add(hn::Mul(row, hn::Set(di, l.width)), i)));
+    if (!any_linear) return nearest;
+  }
+  hn::Vec<DIB> i0, i1, wi, j0 = hn::Zero(di), j1 = j0, wj = j0, k1 = face, wk = j0;
+  fixed_taps(s, l.width, tp.wrap_s, tp.pot_s, i0, i1, wi);
+  if (!tp.one_d) fixed_taps(t, l.height, tp.wrap_t, tp.pot_t, j0, j1, wj);
+  const Weight8 across = weight8(wi), down = weight8(wj);
+  const auto width = hn::Set(di, l.width), height = hn::Set(di, l.height);
+  auto slice = [&](hn::Vec<DIB> image) {
+    const auto base = hn::Mul(image, height);
+    hn::Vec<DUB> t00, t10, t01, t11;
+    texel_words(l, hn::Mul(hn::Add(base, j0), width), i0, none, i1, none, t00, t10);
+    const Bytes8 top = lerp8(unpack8(t00), unpack8(t10), across);
+    if (tp.one_d) return top;
+    texel_words(l, hn::Mul(hn::Add(base, j1), width), i0, none, i1, none, t01, t11);
+    return lerp8(top, lerp8(unpack8(t01), unpack8(t11), across), down);
+  };
+  hn::Vec<DIB> k0 = face;
+  if (tp.three_d) fixed_taps(r, l.depth, tp.wrap_r, tp.pot_r, k0, k1, wk);
+  const Bytes8 out = tp.three_d ? lerp8(slice(k0), slice(k1), weight8(wk)) : slice(k0);
+  return all_linear ? out : select8(hn::RebindMask(du, linear), out, nearest);
+}
+
+/// sample_texture's levels for the 8-bit sampler, blended between two levels in 256ths (the
+/// fraction truncated, texture.cpp's sample_texture_bytes).
+HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const QuadDerivatives* d, MB live) {
+  const DB db;
+  const DIB di;
+  const DUB du;
+  if (!d) return sample_level_bytes(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear));
+  const LevelChoice c = choose_levels(tp, *d);
+  const auto live_i = hn::RebindMask(di, live);
+  const int first = hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(live_i, c.lo, hn::Set(di, 1 << 20))));
+  const int last = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElse(live_i, c.hi, hn::Set(di, -1))));
+  Bytes8 lo = unpack8(hn::Zero(du)), hi = lo;
+  for (int level = first; level <= last; ++level) {
+    const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
+    if (hn::AllFalse(di, hn::And(live_i, hn::Or(is_lo, is_hi)))) continue;
+    const Bytes8 texel = sample_level_bytes(tp, level, s, t, r, c.linear);
+    lo = level == first ? texel : select8(hn::RebindMask(du, is_lo), texel, lo);
+    hi = level == first ? texel : select8(hn::RebindMask(du, is_hi), texel, hi);
+  }
+  if (!c.two_levels) return lo;
+  return lerp8(lo, hi, weight8(hn::ConvertTo(di, hn::Mul(c.frac, hn::Set(db, 256.0f)))));
+}
+
 /// The filtered texel of every `live` lane in [0, 1] (sample_texture): the levels each lane
 /// needs sampled one level at a time, then blended.
 HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const QuadDerivatives* d, MB live, VB out[4]) {
   const DB db;
   const DIB di;
-  if (!d) {  // one level, one filter for every lane
+  if (tp.eight_bit) {
+    bytes_to_float(sample_bytes(tp, s, t, r, d, live), out);
+  } else if (!d) {  // one level, one filter for every lane
     sample_level(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear), out);
   } else {
     const LevelChoice c = choose_levels(tp, *d);

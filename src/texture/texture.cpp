@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include <glm/vec3.hpp>
 
@@ -101,6 +103,47 @@ glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t, fl
 
 glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w * (b - a); }
 
+// Whether the 8-bit filter wraps an axis as a power of two: llvmpipe decides it once for the
+// texture (pot_width and the others, from its resource's first level), here from the base
+// level's side; every level below a power-of-two base is one too.
+bool power_of_two(int size) { return size > 0 && (size & (size - 1)) == 0; }
+
+// cvtps2dq: round to nearest even; outside the int range (and NaN) the integer indefinite.
+std::int32_t round_to_int(float x) {
+  if (!(x >= -2147483648.0f && x < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
+  return std::int32_t(std::nearbyint(x));
+}
+
+// A linear filter's two texels along an axis of a level `size` texels long and the weight of
+// the second in 256ths (lp_build_sample_image_linear and lp_build_sample_wrap_linear_int):
+// the position in texels times 256, rounded, less half a texel; repeat wraps the indices by
+// masking (a power of two) or from the coordinate's fraction (lp_build_coord_repeat_npot_
+// linear_int), clamp to edge clamps them.
+struct FixedTaps {
+  int i0, i1, weight;
+};
+
+FixedTaps fixed_taps(float s, int size, TextureWrap wrap, bool pot) {
+  const bool npot_repeat = wrap == TextureWrap::kRepeat && !pot;
+  const float scaled = npot_repeat ? (s - std::floor(s)) * float(size) : s * float(size);
+  const std::int32_t fixed = std::int32_t(std::uint32_t(round_to_int(scaled * 256.0f)) - 128u);
+  const int i = fixed >> 8, weight = fixed & 255;
+  if (wrap == TextureWrap::kClampToEdge) return {std::clamp(i, 0, size - 1), std::clamp(i + 1, 0, size - 1), weight};
+  if (pot) return {i & (size - 1), (i + 1) & (size - 1), weight};
+  const int i0 = std::min(i < 0 ? size - 1 : i, size - 1);
+  return {i0, i0 == size - 1 ? 0 : i0 + 1, weight};
+}
+
+// llvmpipe's 8-bit lerp (lp_build_lerp with prescaled weights, through pmulhrsw): a +
+// round(w (b - a) / 256), halves rounded up, for each of a texel's four bytes.
+int lerp8(int a, int b, int w) { return a + ((w * (b - a) + 128) >> 8); }
+
+glm::vec4 lerp8(const glm::vec4& a, const glm::vec4& b, int w) {
+  glm::vec4 r;
+  for (int c = 0; c < 4; ++c) r[c] = float(lerp8(int(a[c]), int(b[c]), w));
+  return r;
+}
+
 // One level's filtered texel in byte units. The arithmetic, operation by operation, is what
 // the fast pipeline's samplers do on every SIMD target (fast/texcoord-inl.h for coordinates
 // and levels, fast/texture-inl.h for texels): keep them equal.
@@ -120,6 +163,19 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) 
     const int j = one_d ? 0 : nearest_index(v, l.height, wrap_t_of(t));
     const int k = three_d ? nearest_index(w, l.depth, t.wrap_r) : face;
     return texel(l, i, j, k, t, ref);
+  }
+  if (eight_bit_filtering(t)) {
+    const TextureLevel& base = t.levels[std::size_t(t.base_level)];
+    const FixedTaps x = fixed_taps(str.x, l.width, wrap_s_of(t), power_of_two(base.width));
+    if (one_d) return lerp8(texel(l, x.i0, 0, 0, t), texel(l, x.i1, 0, 0, t), x.weight);
+    const FixedTaps y = fixed_taps(str.y, l.height, wrap_t_of(t), power_of_two(base.height));
+    auto slice = [&](int k) {
+      return lerp8(lerp8(texel(l, x.i0, y.i0, k, t), texel(l, x.i1, y.i0, k, t), x.weight),
+                   lerp8(texel(l, x.i0, y.i1, k, t), texel(l, x.i1, y.i1, k, t), x.weight), y.weight);
+    };
+    if (!three_d) return slice(face);
+    const FixedTaps z = fixed_taps(str.z, l.depth, t.wrap_r, power_of_two(base.depth));
+    return lerp8(slice(z.i0), slice(z.i1), z.weight);
   }
   float uu = u - 0.5f;
   int i0 = int(std::floor(uu));
@@ -201,6 +257,13 @@ bool Texture::complete() const {
     if (l.width != w || l.height != h || (dimensions == 3 && l.depth != d)) return false;
   }
   return true;
+}
+
+bool eight_bit_filtering(const Texture& t) {
+  auto simple = [](TextureWrap w) { return w == TextureWrap::kRepeat || w == TextureWrap::kClampToEdge; };
+  if (t.depth || t.wide || !simple(wrap_s_of(t))) return false;
+  if ((t.dimensions >= 2 || t.cube_map) && !simple(wrap_t_of(t))) return false;
+  return t.dimensions < 3 || simple(t.wrap_r);
 }
 
 glm::vec4 border_texel(const Texture& t) {
@@ -393,7 +456,10 @@ glm::vec4 sample_texture_bytes(const Texture& t, glm::vec3 st, float rho2, float
   const int level = base + int(floor);
   const float frac = lod - floor;
   if (level >= last) return sample_level(t, last, st, linear_in_level);
-  return lerp(sample_level(t, level, st, linear_in_level), sample_level(t, level + 1, st, linear_in_level), frac);
+  const glm::vec4 lo = sample_level(t, level, st, linear_in_level), hi = sample_level(t, level + 1, st, linear_in_level);
+  // The 8-bit sampler blends the levels in 256ths too, the fraction truncated.
+  if (eight_bit_filtering(t)) return lerp8(lo, hi, int(frac * 256.0f));
+  return lerp(lo, hi, frac);
 }
 
 }  // namespace shadelab

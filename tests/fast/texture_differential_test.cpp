@@ -7,7 +7,8 @@
 // coordinates, in framebuffers of even and odd heights (llvmpipe's quads then lie across the
 // fast path's blocks), on every SIMD target. Where the texel is the colour (GL_REPLACE of an
 // RGBA texture, unlit, opaque) the pictures must be identical: the samplers must pick and
-// filter the same texels in the same arithmetic. Otherwise colours within 1/255, as for every
+// filter the same texels in the same arithmetic (llvmpipe's 8-bit filter for repeat and clamp
+// to edge, float for the other wrap modes). Otherwise colours within 1/255, as for every
 // other state. One unit's draws take the textured kernel, two units' and GL_COMBINE's the
 // general block: both are drawn, and the kernel is chosen for the state it implements only.
 #include <gtest/gtest.h>
@@ -50,8 +51,8 @@ void random_levels_cube(std::mt19937& rng, Texture& t) {
   }
 }
 
-// A texture of random size (1 to 256 a side, any aspect; 3D: up to 32^3; cube maps: six
-// square faces up to 64), noisy checkerboard texels, every parameter random; mipmapped when
+// A texture of random size (1 to 256 a side, any aspect, some sides not powers of two; 3D: up
+// to 32^3; cube maps: six square faces up to 64), noisy checkerboard texels, every parameter random; mipmapped when
 // the filter needs it (and sometimes otherwise).
 std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool three_d = false, bool cube = false) {
   auto pick = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(rng); };
@@ -59,8 +60,11 @@ std::shared_ptr<Texture> random_texture(std::mt19937& rng, bool one_d, bool thre
   TextureLevel level;
   t->dimensions = one_d ? 1 : three_d ? 3 : 2;
   t->cube_map = cube;
-  level.width = 1 << pick(0, three_d ? 5 : cube ? 6 : 8);
-  level.height = one_d ? 1 : cube ? level.width : 1 << pick(0, three_d ? 5 : 8);
+  // A quarter of 1D and 2D textures have sides that are not powers of two (GL 2.0's; repeat
+  // wraps them otherwise in llvmpipe's 8-bit filter).
+  auto side = [&](int log2_max) { return !three_d && !cube && pick(0, 3) == 0 ? pick(3, 100) : 1 << pick(0, log2_max); };
+  level.width = side(three_d ? 5 : cube ? 6 : 8);
+  level.height = one_d ? 1 : cube ? level.width : side(three_d ? 5 : 8);
   level.depth = three_d ? 1 << pick(0, 5) : cube ? 6 : 1;
   const int squares = 1 << pick(0, 4);
   for (int k = 0; k < level.depth; ++k) {

@@ -34,12 +34,49 @@ TEST(Texture, NearestPicksTheTexelContainingThePoint) {
 
 TEST(Texture, BilinearBlendsTheFourNearestTexels) {
   Texture t = two_by_two(TextureFilter::kLinear, TextureWrap::kClampToEdge);
-  // Centre (0.5, 0.5): u = v = 1, uu = vv = 0.5 -> equal weights: (0+100+200+255)/4.
-  EXPECT_NEAR(red_at(t, 0.5f, 0.5f), 138.75f, 1e-3);
+  // Centre (0.5, 0.5): u = v = 1, equal weights (128 / 256) in llvmpipe's 8-bit filter, each
+  // lerp rounded to a byte: rows 50 and 228, then 139 (the mean of the four is 138.75).
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f), 139.0f, 1e-3);
   // (0.5, 0.25): vv = 0 -> row 0 only, halfway: (0 + 100) / 2.
   EXPECT_NEAR(red_at(t, 0.5f, 0.25f), 50.0f, 1e-3);
   // (0.375, 0.25): u = 0.75, uu = 0.25 -> 0.75 * 0 + 0.25 * 100.
   EXPECT_NEAR(red_at(t, 0.375f, 0.25f), 25.0f, 1e-3);
+}
+
+// llvmpipe's 8-bit filter (GL_REPEAT and GL_CLAMP_TO_EDGE): positions in 256ths of a texel,
+// every lerp rounded to a byte, halves up; the other wrap modes filter in float.
+TEST(Texture, EightBitFilteringForRepeatAndClampToEdge) {
+  // 2x1: red 10 and 11. Half-way (s = 0.5) is 10.5: 11 in 8 bits, 10.5 in float (GL_CLAMP).
+  Texture t;
+  t.levels.push_back({2, 1, {10, 0, 0, 255, 11, 0, 0, 255}});
+  t.min_filter = t.mag_filter = TextureFilter::kLinear;
+  t.wrap_s = t.wrap_t = TextureWrap::kClampToEdge;
+  EXPECT_TRUE(eight_bit_filtering(t));
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f), 11.0f, 1e-3);
+  t.wrap_s = TextureWrap::kClamp;
+  EXPECT_FALSE(eight_bit_filtering(t));
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f), 10.5f, 1e-3);
+  t.wrap_s = TextureWrap::kRepeat;
+  t.wrap_t = TextureWrap::kMirroredRepeat;
+  EXPECT_FALSE(eight_bit_filtering(t));
+  t.depth = true;
+  t.wrap_t = TextureWrap::kRepeat;
+  EXPECT_FALSE(eight_bit_filtering(t));  // depth textures: compared in float
+  t.depth = false;
+  t.wide = true;
+  EXPECT_FALSE(eight_bit_filtering(t));  // 16-bit components: llvmpipe filters them in float
+
+  // 3x1 (not a power of two), red 0, 90, 180, repeated: the position's fraction of the row
+  // (lp_build_coord_repeat_npot_linear_int). s = 0.05: 0.15 texels, less half a texel is
+  // -0.35, so texel 2 (180) and texel 0 (0), weight round(0.65 * 256) = 166: 180 + round(166
+  // (0 - 180) / 256) = 180 - 117 = 63.
+  Texture n;
+  n.levels.push_back({3, 1, {0, 0, 0, 255, 90, 0, 0, 255, 180, 0, 0, 255}});
+  n.min_filter = n.mag_filter = TextureFilter::kLinear;
+  EXPECT_NEAR(red_at(n, 0.05f, 0.5f), 63.0f, 1e-3);
+  EXPECT_NEAR(red_at(n, 1.05f, 0.5f), 63.0f, 1e-3);
+  // s = 0.5: texel 1 exactly (weight 0 to texel 2).
+  EXPECT_NEAR(red_at(n, 0.5f, 0.5f), 90.0f, 1e-3);
 }
 
 TEST(Texture, RepeatWrapsAcrossTheEdgeWhenFiltering) {
@@ -119,7 +156,7 @@ TEST(Texture, MinificationStartsAtRhoOneForEveryFilterPair) {
   Texture t = two_by_two(TextureFilter::kLinear, TextureWrap::kRepeat);
   t.min_filter = TextureFilter::kNearestMipmapNearest;
   generate_mipmaps(t);
-  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 138.75f, 1e-3);  // magnified: bilinear, level 0
+  EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.0f), 139.0f, 1e-3);  // magnified: bilinear, level 0
   EXPECT_NEAR(red_at(t, 0.5f, 0.5f, 1.2f), 255.0f, 1e-3);   // nearest, level 0: texel (1, 1)
 }
 
@@ -275,8 +312,9 @@ TEST(Texture, ThreeDimensionalTexturesFilterTrilinearly) {
   EXPECT_NEAR(red(0.25f, 0.25f, 0.75f), 200.0f, 1e-3);
   EXPECT_NEAR(red(0.75f, 0.75f, 0.75f), 100.0f, 1e-3);
   EXPECT_NEAR(red(0.25f, 0.25f, 0.5f), 100.0f, 1e-3);  // halfway between the images
-  // Centre: image 1's bilinear mean (200 * 3 + 100) / 4 = 175, half of it.
-  EXPECT_NEAR(red(0.5f, 0.5f, 0.5f), 87.5f, 1e-3);
+  // Centre: image 1's bilinear mean (200 * 3 + 100) / 4 = 175, then half of it, 87.5, which
+  // the 8-bit filter rounds up.
+  EXPECT_NEAR(red(0.5f, 0.5f, 0.5f), 88.0f, 1e-3);
   t.min_filter = t.mag_filter = TextureFilter::kNearest;
   EXPECT_NEAR(red(0.9f, 0.9f, 0.6f), 100.0f, 1e-3);
   t.wrap_r = TextureWrap::kClampToBorder;
