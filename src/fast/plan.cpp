@@ -4,6 +4,7 @@
 #include "fast/plan.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace shadelab::fast {
 
@@ -95,8 +96,8 @@ TexturePlan texture_plan(const TextureUnit& unit) {
   tp.combine = unit.combine;
   tp.format = t->format;
   tp.eight_bit = eight_bit_filtering(*t);
-  auto pot = [](int n) { return n > 0 && (n & (n - 1)) == 0; };
-  tp.pot_s = pot(base.width), tp.pot_t = pot(base.height), tp.pot_r = pot(base.depth);
+  tp.pot_s = std::has_single_bit(unsigned(base.width)), tp.pot_t = std::has_single_bit(unsigned(base.height));
+  tp.pot_r = std::has_single_bit(unsigned(base.depth));
   return tp;
 }
 

@@ -267,6 +267,13 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   for (int c = 0; c < 4; ++c) out[c] = lerp(near[c], far[c], cw);
 }
 
+/// The levels the `live` lanes sample, from `first` to `last` (a lane's lower and upper ones).
+HWY_INLINE void level_range(const LevelChoice& c, hn::Mask<DIB> live, int& first, int& last) {
+  const DIB di;
+  first = hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(live, c.lo, hn::Set(di, 1 << 20))));
+  last = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElse(live, c.hi, hn::Set(di, -1))));
+}
+
 /// texture.cpp's round_to_int (cvtps2dq): nearest, ties to even; outside the int range and NaN
 /// the integer indefinite (x86's conversion itself; elsewhere its result made).
 HWY_INLINE hn::Vec<DIB> round_to_int(VB x) {
@@ -435,8 +442,8 @@ HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const Qu
   if (!d) return sample_level_bytes(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear));
   const LevelChoice c = choose_levels(tp, *d);
   const auto live_i = hn::RebindMask(di, live);
-  const int first = hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(live_i, c.lo, hn::Set(di, 1 << 20))));
-  const int last = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElse(live_i, c.hi, hn::Set(di, -1))));
+  int first, last;
+  level_range(c, live_i, first, last);
   Bytes8 lo = unpack8(hn::Zero(du)), hi = lo;
   for (int level = first; level <= last; ++level) {
     const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
@@ -461,8 +468,8 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
   } else {
     const LevelChoice c = choose_levels(tp, *d);
     const auto live_i = hn::RebindMask(di, live);
-    const int first = hn::GetLane(hn::MinOfLanes(di, hn::IfThenElse(live_i, c.lo, hn::Set(di, 1 << 20))));
-    const int last = hn::GetLane(hn::MaxOfLanes(di, hn::IfThenElse(live_i, c.hi, hn::Set(di, -1))));
+    int first, last;
+    level_range(c, live_i, first, last);
     VB lo[4] = {hn::Zero(db), hn::Zero(db), hn::Zero(db), hn::Zero(db)}, hi[4] = {lo[0], lo[1], lo[2], lo[3]};
     for (int level = first; level <= last; ++level) {
       const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));

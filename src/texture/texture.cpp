@@ -5,6 +5,7 @@
 #include "shadelab/texture.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -103,11 +104,6 @@ glm::vec4 texel(const TextureLevel& l, int i, int j, int k, const Texture& t, fl
 
 glm::vec4 lerp(const glm::vec4& a, const glm::vec4& b, float w) { return a + w * (b - a); }
 
-// Whether the 8-bit filter wraps an axis as a power of two: llvmpipe decides it once for the
-// texture (pot_width and the others, from its resource's first level), here from the base
-// level's side; every level below a power-of-two base is one too.
-bool power_of_two(int size) { return size > 0 && (size & (size - 1)) == 0; }
-
 // cvtps2dq: round to nearest even; outside the int range (and NaN) the integer indefinite.
 std::int32_t round_to_int(float x) {
   if (!(x >= -2147483648.0f && x < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
@@ -165,7 +161,11 @@ glm::vec4 sample_level(const Texture& t, int level, glm::vec3 str, bool linear) 
     return texel(l, i, j, k, t, ref);
   }
   if (eight_bit_filtering(t)) {
+    // Repeat wraps a side that is a power of two by a mask: llvmpipe decides it once for the
+    // texture (pot_width and the others, from its resource's first level), here from the base
+    // level; every level below a power-of-two base is one too.
     const TextureLevel& base = t.levels[std::size_t(t.base_level)];
+    auto power_of_two = [](int side) { return std::has_single_bit(unsigned(side)); };
     const FixedTaps x = fixed_taps(str.x, l.width, wrap_s_of(t), power_of_two(base.width));
     if (one_d) return lerp8(texel(l, x.i0, 0, 0, t), texel(l, x.i1, 0, 0, t), x.weight);
     const FixedTaps y = fixed_taps(str.y, l.height, wrap_t_of(t), power_of_two(base.height));
