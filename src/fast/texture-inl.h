@@ -403,7 +403,7 @@ HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB 
     hn::Mask<DIB> unused = none;
     auto index = [&](VB c, int size, TextureWrap wrap) {
       const auto i = hn::ConvertTo(di, hn::Floor(texel_coord(c, size, wrap)));
-      return wrap_index(wrap == TextureWrap::kRepeat ? i : hn::Min(i, hn::Set(di, size - 1)), size, wrap, unused);
+      return wrap_index(keeps_nearest_in_level(wrap) ? hn::Min(i, hn::Set(di, size - 1)) : i, size, wrap, unused);
     };
     const auto i = index(s, l.width, tp.wrap_s);
     auto row = tp.one_d ? hn::Zero(di) : index(t, l.height, tp.wrap_t);
