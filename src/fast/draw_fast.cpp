@@ -274,7 +274,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
   if (what == 0 || !simd || x0 + kTileSize > fb.width || y0 + kTileSize > fb.height) {
     if (what) clear_tile(fb, p, tile, used, false);
     ws.target = framebuffer_target(fb);
-    ws.bound.on = false;
+    ws.bound.start(x0, y0, false, simd, (what & Clears::kDepth) != 0, p.depth);
     for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
     return;
   }
@@ -286,7 +286,7 @@ void draw_tile(PipelineContext::Impl& impl, Framebuffer& fb, int tile, const Job
                       std::size_t(fb.width)};
   load_tile(b, rows, what, p.color, p.depth, with_depth);
   ws.target = {b.depth, b.color, std::size_t(kTileSize), x0, y0, fb.stencil.data(), std::size_t(fb.width)};
-  ws.bound = {true, (what & Clears::kDepth) != 0, p.depth};
+  ws.bound.start(x0, y0, true, true, (what & Clears::kDepth) != 0, p.depth);
   for (const DrawJob* job : jobs) raster_tile(*job, tile, ws);
   store_tile(b, rows, with_depth);
   fence_streams();

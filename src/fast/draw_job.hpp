@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -217,11 +218,40 @@ struct alignas(64) TileBuffer {
 
 /// The largest depth value of the tile a worker draws in its tile buffer (raster.cpp's
 /// behind_tile): a large triangle every fragment of which would fail GL_LESS or GL_LEQUAL
-/// against it is not rasterized there at all.
+/// against it is not rasterized there at all. And, in the tile buffer or in place, a bound
+/// above the depth of each of the tile's blocks (raster-inl.h's block_bounds), by which the
+/// depth-testing and textured kernels skip a block hidden there before its coverage and depth
+/// are computed.
 struct TileDepthBound {
   bool on = false;     ///< drawing a tile in the tile buffer
   bool known = false;  ///< `max` is the largest depth in the tile (else computed when needed)
   float max = 1.0f;
+  /// Whether the blocks' bounds serve the tile drawn: only the SIMD paths draw in it, and
+  /// each leaves every bound above its block's depth (raster.cpp's depth_written).
+  bool blocks_on = false;
+  /// `blocks` holds a bound for each block of the tile, row of blocks after row; else every
+  /// block's bound is `initial` (the cleared depth, or infinity when unknown) and `blocks` is
+  /// filled at its first use. Depth tests GL_LESS, GL_LEQUAL, GL_EQUAL and GL_NEVER only ever
+  /// lower a stored depth, so a bound stays above it through their writes.
+  bool blocks_ready = false;
+  float initial = 1.0f;
+  int x0 = 0, y0 = 0;  ///< the tile's first pixel
+  /// Room for a tile's blocks of one pixel (the scalar target's); no allocation while drawing.
+  std::array<float, kTileSize * kTileSize> blocks;
+
+  /// At the start of the tile at (x, y): drawn in the tile buffer or in place (`buffered`),
+  /// by the SIMD paths only (`simd`), its depth cleared to `depth` or (`cleared` false)
+  /// unknown.
+  void start(int x, int y, bool buffered, bool simd, bool cleared, float depth) {
+    on = buffered;
+    known = cleared;
+    max = depth;
+    blocks_on = simd;
+    blocks_ready = false;
+    initial = cleared ? depth : std::numeric_limits<float>::infinity();
+    x0 = x;
+    y0 = y;
+  }
 };
 
 /// Per-worker scratch (vertex stage and rasterizer).

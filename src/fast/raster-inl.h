@@ -109,6 +109,38 @@ inline void close_block(const DrawJob& job, const BlockPixels& g) {
   }
 }
 
+// A bound below every fragment's depth (block(): clamp_unit(plane + offset)). A plane with
+// no slope gives each fragment base + 0 + 0 exactly: that depth itself. Otherwise the
+// vertices' nearest, less far more than the few float roundings of the plane and the offset.
+inline float nearest_depth(const TriSetup& t) {
+  const float base = t.depth.base, d0 = t.depth.d0, d1 = t.depth.d1;
+  auto unit = [](float v) { return v > 0.0f ? std::min(v, 1.0f) : 0.0f; };
+  if (d0 == 0.0f && d1 == 0.0f) return unit(base + t.offset);
+  const float margin = 0x1p-20f * (std::fabs(base) + std::fabs(d0) + std::fabs(d1) + std::fabs(t.offset));
+  return unit(std::min({base, base + d0, base + d1}) + t.offset - margin);
+}
+
+// The depth bounds of the tile's blocks (TileDepthBound::blocks, filled at their first use)
+// for a triangle drawn with the depth test GL_LESS or GL_LEQUAL, or null where they do not
+// serve (a tile some draw of which takes the reference's path; a draw whose fragments are
+// counted, always rasterized). A block whose bound is at most `reject` (the triangle's
+// nearest depth, or for GL_LEQUAL the float below it) holds no depth any fragment of the
+// triangle passes.
+HWY_INLINE float* block_bounds(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, float& reject) {
+  const FragmentState& f = *job.frag;
+  TileDepthBound& b = ws.bound;
+  const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
+  if (!b.blocks_on || job.counted || !f.depth_test || !(less || lequal)) return nullptr;
+  if (!b.blocks_ready) {
+    const std::size_t n = std::size_t(kTileSize / kRows) * (kTileSize / hn::Lanes(DD()));
+    std::fill_n(b.blocks.begin(), n, b.initial);
+    b.blocks_ready = true;
+  }
+  const float z = nearest_depth(t);
+  reject = less ? z : std::nextafter(z, -1.0f);
+  return b.blocks.data();
+}
+
 // A triangle's fragment counts, kept in registers while it is drawn (RenderStats at the end).
 struct GroupCounts {
   std::uint64_t fragments = 0, shaded = 0;
@@ -251,11 +283,12 @@ HWY_INLINE unsigned kept_lanes(const DrawJob& job, const TriSetup& t, int x, int
 // A block of a triangle wholly inside the framebuffer, by one of the kernels compiled for
 // the usual fragment state (BlockKernel, draw_job.hpp): the same operations as simd_block's
 // for that state, without reading it per block; the opaque kernels' colours from the byte
-// planes.
+// planes. `bound`, when not null, is the block's depth bound (block_bounds): set to the
+// largest depth the block holds after its depth test.
 template <BlockKernel kKernel>
 HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
                              GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
-                             const VD b1[kRows], VB f0, VB f1, VB z) {
+                             const VD b1[kRows], VB f0, VB f1, VB z, float* bound) {
   constexpr bool kLequal = kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal;
   constexpr bool kBlend = kernel_blends(kKernel);
   const DF df;
@@ -272,10 +305,14 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
     passed = block_bits(hn::And(block_mask(bits), kLequal ? hn::Le(z, stored) : hn::Lt(z, stored)));
     counts.fragments += unsigned(std::popcount(bits));
     counts.shaded += unsigned(std::popcount(passed));
-    if (!passed) return;
+    if (!passed) {
+      if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+      return;
+    }
     store_rows(df, z, passed, depth);
+    if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), hn::IfThenElse(block_mask(passed), z, stored)));
   } else {
-    (void)z;
+    (void)z, (void)bound;
     counts.fragments += unsigned(std::popcount(bits));
     counts.shaded += unsigned(std::popcount(bits));
   }
@@ -292,10 +329,12 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
 
 // A block of a triangle wholly inside the framebuffer by the kTextured kernel: simd_block's
 // operations for its state (the depth test first, the colours of the lanes it passes, the
-// alpha test, then depth and colour written), block_color's for one unit.
+// alpha test, then depth and colour written), block_color's for one unit. `bound`, when not
+// null, is the block's depth bound (block_bounds): set to the largest depth the block holds
+// after it is drawn.
 HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
                                GroupCounts& counts, int x, int y, unsigned bits, const VD e[kRows][3],
-                               const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, VB z) {
+                               const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, VB z, float* bound) {
   const DF df;
   const FragmentState& fs = *job.frag;
   const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
@@ -308,8 +347,15 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
   }
   counts.fragments += unsigned(std::popcount(bits));
   unsigned passed = bits;
-  if (fs.depth_test) passed = block_bits(hn::And(block_mask(bits), depth_compare(fs.depth_func, z, load_rows(df, depth))));
-  if (!passed) return;
+  VB stored = z;
+  if (fs.depth_test) {
+    stored = load_rows(df, depth);
+    passed = block_bits(hn::And(block_mask(bits), depth_compare(fs.depth_func, z, stored)));
+  }
+  if (!passed) {
+    if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+    return;
+  }
   if (!planes.ready) set_up_planes(job, t, planes);
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   const int unit = job.plan.texture_unit;
@@ -330,8 +376,15 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
   }
   if (job.plan.alpha_test) passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, c.c[3]);
   counts.shaded += unsigned(std::popcount(passed));
-  if (!passed) return;
-  if (fs.depth_test && fs.depth_write) store_rows(df, z, passed, depth);
+  if (!passed) {
+    if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+    return;
+  }
+  if (fs.depth_test && fs.depth_write) {
+    store_rows(df, z, passed, depth);
+    stored = hn::IfThenElse(block_mask(passed), z, stored);
+  }
+  if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
   write_colors(job, c, passed, color);
 }
 
@@ -351,10 +404,13 @@ inline void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws,
 }
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
-// for the block whose top-left pixel is (x, y); e[r] are row r's edge values.
+// for the block whose top-left pixel is (x, y); e[r] are row r's edge values; `bound` the
+// block's depth bound for the depth-testing and textured kernels to keep (block_bounds), or
+// null.
 template <Path kPath, BlockKernel kKernel, bool kCoverage>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
-                      GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3]) {
+                      GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3],
+                      [[maybe_unused]] float* bound) {
   const DD dd;
   const DF df;
   const int lanes = int(hn::Lanes(dd));
@@ -405,9 +461,9 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
   } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kTextured) {
-    textured_block(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z);
+    textured_block(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
-    kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
+    kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z, bound);
   } else {
     simd_block<kPath>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z,
                       kCoverage ? &coverage : nullptr);
@@ -434,6 +490,12 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   const int gy0 = t.y0 & ~(kRows - 1);
   TrianglePlanes planes;
   GroupCounts counts;
+  // The depth-testing and textured kernels skip the blocks their bounds show hidden
+  // (block_bounds).
+  float reject = 0.0f;
+  float* const bounds =
+      kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel) ? block_bounds(job, t, ws, reject) : nullptr;
+  const int blocks_per_row = kTileSize / lanes;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
   #pragma GCC unroll 4
   for (int k = 0; k < 3; ++k) {
@@ -450,8 +512,10 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
         row_start[k] += row_step[k];
       }
     }
+    float* const row_bounds = bounds ? bounds + ((y - ws.bound.y0) / kRows) * blocks_per_row : nullptr;
     for (int x = gx0; x <= t.x1; x += lanes) {
-      block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr);
+      float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
+      if (!bound || *bound > reject) block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
         #pragma GCC unroll 4

@@ -8,6 +8,8 @@
 #define HWY_TARGET_INCLUDE "fast/raster.cpp"
 #include "hwy/foreach_target.h"  // IWYU pragma: keep
 
+#include <limits>
+
 #include "fast/raster-inl.h"
 #include "fast/raster.hpp"
 #include "hwy/highway.h"
@@ -32,17 +34,6 @@ float tile_max_depth(const PixelTarget& target) {
   return hn::GetLane(hn::MaxOfLanes(df, m));
 }
 
-// A bound below every fragment's depth (block(): clamp_unit(plane + offset)). A plane with
-// no slope gives each fragment base + 0 + 0 exactly: that depth itself. Otherwise the
-// vertices' nearest, less far more than the few float roundings of the plane and the offset.
-float nearest_depth(const TriSetup& t) {
-  const float base = t.depth.base, d0 = t.depth.d0, d1 = t.depth.d1;
-  auto unit = [](float v) { return v > 0.0f ? std::min(v, 1.0f) : 0.0f; };
-  if (d0 == 0.0f && d1 == 0.0f) return unit(base + t.offset);
-  const float margin = 0x1p-20f * (std::fabs(base) + std::fabs(d0) + std::fabs(d1) + std::fabs(t.offset));
-  return unit(std::min({base, base + d0, base + d1}) + t.offset - margin);
-}
-
 // Whether the tile's largest depth shows that no fragment of this large triangle passes the
 // depth test GL_LESS (or with `lequal` GL_LEQUAL), so that it need not be rasterized in this
 // tile (a draw whose fragments are counted is always rasterized). Only for draws without the
@@ -50,9 +41,27 @@ float nearest_depth(const TriSetup& t) {
 bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool lequal) {
   TileDepthBound& b = ws.bound;
   if (!b.on || job.counted || (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) < kBoundedArea) return false;
-  if (!b.known) b = {true, true, tile_max_depth(ws.target)};
+  if (!b.known) {
+    b.known = true;
+    b.max = tile_max_depth(ws.target);
+  }
   const float z = nearest_depth(t);
   return lequal ? z > b.max : z >= b.max;
+}
+
+// After a triangle is drawn: the tile's largest depth is no longer known where it wrote
+// depth, and the blocks' bounds no longer hold where its test let a write raise a depth.
+void depth_written(const DrawJob& job, WorkerScratch& ws) {
+  const FragmentState& f = *job.frag;
+  if (!f.depth_test || !f.depth_write) return;
+  TileDepthBound& b = ws.bound;
+  b.known = false;
+  const CompareFunc func = f.depth_func;
+  if (func != CompareFunc::kLess && func != CompareFunc::kLequal && func != CompareFunc::kEqual &&
+      func != CompareFunc::kNever) {
+    b.blocks_ready = false;
+    b.initial = std::numeric_limits<float>::infinity();
+  }
 }
 
 // A triangle drawn by a kernel, unless its tile's depth bound hides it.
@@ -63,7 +72,7 @@ void raster_kernel(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   } else {
     if (behind_tile(job, t, ws, kKernel == BlockKernel::kOpaqueLequal || kKernel == BlockKernel::kBlendLequal)) return;
     raster_path<Path::kInterior, kKernel>(job, t, ws, true);
-    ws.bound.known = false;  // depth written
+    depth_written(job, ws);
   }
 }
 
@@ -74,7 +83,7 @@ void raster_textured(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
   if (f.depth_test && (less || lequal) && behind_tile(job, t, ws, lequal)) return;
   raster_path<Path::kInterior, BlockKernel::kTextured>(job, t, ws, true);
-  if (f.depth_test && f.depth_write) ws.bound.known = false;
+  depth_written(job, ws);
 }
 
 void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
@@ -82,7 +91,7 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
                         (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
   if (job.plan.scalar_fragments) {
-    raster_scalar(job, t, ws, interior);  // never in a tile buffer: no depth bound to keep
+    raster_scalar(job, t, ws, interior);  // its tile keeps no depth bounds (draw_tile)
   } else if (interior) {
     switch (job.plan.kernel) {
       case BlockKernel::kOpaqueLess: return raster_kernel<BlockKernel::kOpaqueLess>(job, t, ws);
@@ -95,9 +104,10 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kGeneral: break;
     }
     raster_general(job, t, ws, true);
-    if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
-  } else {
+    depth_written(job, ws);
+  } else {  // in a tile drawn in place, whose blocks' bounds follow its depth all the same
     raster_general(job, t, ws, false);
+    depth_written(job, ws);
   }
 }
 
@@ -133,7 +143,7 @@ HWY_INLINE void prefetch_ahead(const DrawJob& job, int c, const std::vector<std:
       const bool interior = (t.x1 & ~(lanes - 1)) + lanes <= job.fb->width &&
                             (t.y1 & ~(kRows - 1)) + kRows <= job.fb->height;
       raster_coverage(job, t, ws, interior);
-      if (job.frag->depth_test && job.frag->depth_write) ws.bound.known = false;
+      depth_written(job, ws);
     }
   }
 }

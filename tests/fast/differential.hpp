@@ -51,6 +51,20 @@ inline Result render(const Framebuffer& initial, const std::vector<RandomDraw>& 
   return r;
 }
 
+// Draws every draw into a copy of `initial` through `context` with `clears` pending, then
+// applies what is still pending: the fast pipeline's image of a frame begun with a clear.
+inline Framebuffer render_cleared_later(const Framebuffer& initial, const std::vector<RandomDraw>& draws,
+                                        PipelineContext& context, const PipelineContext::PendingClears& clears) {
+  Framebuffer fb = initial;
+  context.pending_clears() = clears;
+  for (const RandomDraw& d : draws) {
+    VertexInput in = d.input();
+    draw_triangles(fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &context);
+  }
+  context.apply_pending_clears(fb);
+  return fb;
+}
+
 inline std::string compare_buffers(const Framebuffer& fast, const Framebuffer& ref) {
   std::ostringstream out;
   int shown = 0;

@@ -220,16 +220,166 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
     cleared.clear_color(glm::vec4(0x60, 0x40, 0x20, 0xff) / 255.0f);
     cleared.clear_depth(1.0f);
     Result ref = render(cleared, draws, nullptr);
-    Result fast;
-    fast.fb = initial;
-    ctx.pending_clears() = clears;
-    for (const RandomDraw& d : draws) {
-      VertexInput in = d.input();
-      draw_triangles(fast.fb, d.projection, d.viewport, d.frag, d.shade, in, nullptr, &ctx);
-    }
-    ctx.apply_pending_clears(fast.fb);
-    ASSERT_EQ(compare_buffers(fast.fb, ref.fb), "") << "seed " << seed;
+    ASSERT_EQ(compare_buffers(render_cleared_later(initial, draws, ctx, clears), ref.fb), "") << "seed " << seed;
   }
+}
+
+// Textured and untextured quads (the textured and depth-testing kernels, which skip the
+// blocks their tiles' depth bounds show hidden: raster-inl.h's block_bounds) at a few shared
+// depths or sloped, mostly GL_LESS and GL_LEQUAL (equal depths pass one and fail the other),
+// sometimes alpha-tested, blended or not writing depth; among them depth tests that raise a
+// stored depth (GL_GREATER, GL_ALWAYS, GL_NOTEQUAL, GL_GEQUAL), which the bounds must follow. Tiles with and without a
+// pending depth clear (in the tile buffer, or in place with unknown depth), over a noisy
+// depth buffer sometimes, and more draws than the queue holds. On every SIMD target (blocks
+// of 1 to 8 pixels a row). The same as the reference.
+TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
+  PipelineContext ctx(2);
+  ctx.set_deferred(true);
+  const CompareFunc raising[] = {CompareFunc::kGreater, CompareFunc::kAlways, CompareFunc::kNotequal,
+                                 CompareFunc::kGequal, CompareFunc::kEqual};
+  const float levels[] = {-0.5f, -0.2f, 0.0f, 0.2f, 0.5f};
+  int textured_kernel = 0, cases = 0;
+  const std::vector<std::string> targets = fast::available_simd_targets();
+  for (unsigned seed = 0; seed < random_cases(12) * targets.size(); ++seed, ++cases) {
+    const std::string& target = targets[seed % targets.size()];
+    ASSERT_TRUE(fast::force_simd_target(target));
+    RandomDraws random(9500 + seed);
+    const glm::ivec2 size{random.integer(2, 3) * PipelineContext::kTileSize + random.integer(0, 40),
+                          random.integer(1, 2) * PipelineContext::kTileSize + random.integer(0, 40)};
+    const Framebuffer initial = random.framebuffer(size);
+    const Viewport viewport{0, 0, size.x, size.y};
+    std::vector<RandomDraw> draws;
+    const int count = random.integer(10, 90);
+    for (int k = 0; k < count; ++k) {
+      RandomDraw d;
+      d.viewport = viewport;
+      d.shade.lighting = false;
+      const float p = float(random.uniform(0.0f, 1.0f));
+      d.frag.depth_func = p < 0.45f ? CompareFunc::kLess : p < 0.85f ? CompareFunc::kLequal : raising[random.integer(0, 4)];
+      d.frag.depth_write = random.chance(0.9);
+      const bool textured = random.chance(0.75);
+      for (int q = random.integer(1, 3); q > 0; --q) {
+        glm::vec2 lo{random.uniform(-1.2f, 0.8f), random.uniform(-1.2f, 0.8f)};
+        glm::vec2 hi = lo + glm::vec2(random.uniform(0.05f, 1.5f), random.uniform(0.05f, 1.5f));
+        if (random.chance(0.15)) lo = {-1.0f, -1.0f}, hi = {1.0f, 1.0f};
+        float z[4];
+        const float level = levels[random.integer(0, 4)];
+        for (float& v : z) v = level;
+        if (random.chance(0.3)) {
+          for (float& v : z) v = level + random.uniform(-0.3f, 0.3f);
+        }
+        const auto first = std::uint32_t(d.positions.size());
+        const glm::vec2 corners[4] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+        for (int c = 0; c < 4; ++c) {
+          d.positions.emplace_back(corners[c], z[c], 1.0f);
+          d.colors.push_back(random.color(0.5f));
+          d.texcoords.emplace_back(float(c == 1 || c == 2) * 2.0f, float(c >= 2) * 2.0f, 0.0f, 1.0f);
+        }
+        d.triangles.push_back({first, first + 1, first + 2});
+        d.triangles.push_back({first, first + 2, first + 3});
+      }
+      if (textured) {
+        d.texture = std::make_shared<Texture>();
+        TextureLevel level;
+        level.width = level.height = 4;
+        for (int k = 0; k < 64; ++k) level.rgba.push_back(std::uint8_t(random.integer(0, 255)));
+        d.texture->levels.push_back(level);
+        d.texture->min_filter = d.texture->mag_filter = random.chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
+        d.shade.textures[0].texture = d.texture.get();
+        d.shade.texture_kept = true;  // deferred: drawn together, tile by tile
+        if (random.chance(0.6)) d.frag.alpha_test = {true, CompareFunc::kGreater, 0.5f};
+      } else {
+        d.texcoords.clear();
+        d.frag.blend.enabled = random.chance(0.3);
+      }
+      textured_kernel += test::planned_kernel(d.frag, d.shade) == fast::BlockKernel::kTextured;
+      draws.push_back(std::move(d));
+    }
+    const int columns = (size.x + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize;
+    const int tiles = columns * ((size.y + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize);
+    PipelineContext::PendingClears clears;
+    clears.tiles.resize(std::size_t(tiles));
+    clears.color = 0xff102030u;
+    clears.depth = random.chance(0.5) ? 1.0f : random.uniform(0.3f, 1.0f);
+    Framebuffer cleared = initial;
+    for (int t = 0; t < tiles; ++t) {
+      const std::uint8_t what = random.chance(0.7) ? PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth
+                                                   : std::uint8_t(random.integer(0, 1));
+      clears.tiles[std::size_t(t)] = what;
+      const int x0 = (t % columns) * PipelineContext::kTileSize, y0 = (t / columns) * PipelineContext::kTileSize;
+      for (int y = y0; y < std::min(size.y, y0 + PipelineContext::kTileSize); ++y) {
+        for (int x = x0; x < std::min(size.x, x0 + PipelineContext::kTileSize); ++x) {
+          const std::size_t i = std::size_t(y) * std::size_t(size.x) + std::size_t(x);
+          if (what & PipelineContext::PendingClears::kColor) std::memcpy(&cleared.color[i * 4], &clears.color, 4);
+          if (what & PipelineContext::PendingClears::kDepth) cleared.depth[i] = clears.depth;
+        }
+      }
+    }
+    Result ref = render(cleared, draws, nullptr);
+    ASSERT_EQ(compare_buffers(render_cleared_later(initial, draws, ctx, clears), ref.fb), "")
+        << "seed " << seed << ", " << target;
+  }
+  fast::force_simd_target("");
+  EXPECT_GT(textured_kernel, cases * 20);
+}
+
+// A textured quad of 40 x 40 pixels inside one tile (too small for the tile's depth bound),
+// then the same quad behind it: the blocks whose every pixel the first one covers are not
+// rasterized again (their fragments are not counted), in the tile buffer and in place; the
+// blocks along its edges are. The image is the reference's.
+TEST(FastDifferential, BlockDepthBoundsSkipAHiddenQuad) {
+  const glm::ivec2 size{2 * PipelineContext::kTileSize, PipelineContext::kTileSize};
+  for (const std::string& target : fast::available_simd_targets()) {
+    ASSERT_TRUE(fast::force_simd_target(target));
+    for (bool cleared : {true, false}) {
+      PipelineContext ctx(1);
+      ctx.set_deferred(true);
+      ctx.set_counting(true);
+      std::vector<RandomDraw> draws;
+      for (float z : {-0.5f, 0.5f}) {
+        RandomDraw d;
+        d.viewport = {0, 0, size.x, size.y};
+        d.shade.lighting = false;
+        // Pixels 10 to 49 in x and y (window x = (ndc + 1) * 64, y = (ndc + 1) * 32).
+        const glm::vec2 lo{-1.0f + 10.0f / 64.0f, -1.0f + 20.0f / 64.0f}, hi{-1.0f + 50.0f / 64.0f, -1.0f + 100.0f / 64.0f};
+        const glm::vec2 corners[4] = {lo, {hi.x, lo.y}, hi, {lo.x, hi.y}};
+        for (int c = 0; c < 4; ++c) {
+          d.positions.emplace_back(corners[c], z, 1.0f);
+          d.colors.emplace_back(1.0f);
+          d.texcoords.emplace_back(float(c == 1 || c == 2), float(c >= 2), 0.0f, 1.0f);
+        }
+        d.triangles = {{0, 1, 2}, {0, 2, 3}};
+        d.texture = std::make_shared<Texture>();
+        TextureLevel level;
+        level.width = level.height = 2;
+        level.rgba = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+        d.texture->levels.push_back(level);
+        d.texture->min_filter = TextureFilter::kNearest;  // complete without mipmaps
+        d.shade.textures[0].texture = d.texture.get();
+        d.shade.texture_kept = true;  // the two draws wait, to be drawn in one pass over the tile
+        ASSERT_EQ(test::planned_kernel(d.frag, d.shade), fast::BlockKernel::kTextured);
+        draws.push_back(std::move(d));
+      }
+      Framebuffer initial;
+      initial.resize(size.x, size.y);
+      initial.clear_color(glm::vec4(0.0f));
+      initial.clear_depth(1.0f);
+      Result ref = render(initial, draws, nullptr);
+      PipelineContext::PendingClears clears;
+      if (cleared) {  // a pending clear: the tile is drawn in the tile buffer
+        clears.tiles.assign(2, PipelineContext::PendingClears::kColor | PipelineContext::PendingClears::kDepth);
+        clears.color = 0;
+        clears.depth = 1.0f;
+      }
+      ASSERT_EQ(compare_buffers(render_cleared_later(initial, draws, ctx, clears), ref.fb), "");
+      const RenderStats counts = ctx.take_counts();
+      // The first quad's 1,600 fragments; of the second's, at most its edge blocks' (two
+      // columns of blocks, 8 pixels wide at most, and a row of blocks above and below).
+      EXPECT_GE(counts.fragments, 1600u) << target << ", cleared " << cleared;
+      EXPECT_LE(counts.fragments, 1600u + 2 * 40 * 8 + 2 * 40 * 2) << target << ", cleared " << cleared;
+    }
+  }
+  fast::force_simd_target("");
 }
 
 // clear_later: every tile cleared, by the draws into it (drawn after the clear) or by
