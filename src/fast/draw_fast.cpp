@@ -180,12 +180,12 @@ constexpr std::size_t kParallelSetup = 4096;  // fewer triangles are set up on o
 // Deferred drawing's bounds. A draw with more triangles or vertices draws at once (after the
 // waiting ones): it is long enough to pay for its own pass over the framebuffer, and its
 // triangle indices would have to be copied. The queue's memory stays bounded by its vertex
-// count (the vertex stage's output, 48 bytes and more a vertex) and its draw count (every
-// draw keeps a bin per tile); a full queue is drawn before the next draw joins it.
+// count (the vertex stage's output, 48 bytes and more a vertex) and its draw count
+// (kMaxQueuedDraws, draw_fast.hpp: every draw keeps a bin per tile, 12 KB at 1920 x 1080); a
+// full queue is drawn before the next draw joins it.
 constexpr std::size_t kMaxDeferredTriangles = std::size_t(1) << 16;
 constexpr std::size_t kMaxDeferredVertices = std::size_t(1) << 17;
 constexpr std::size_t kMaxQueuedVertices = std::size_t(1) << 20;
-constexpr std::size_t kMaxQueuedDraws = 64;
 
 // Window coordinates stay within the viewport (up to rounding) after clipping; these bounds
 // keep snapped coordinates in 32 bits and edge functions below 2^53 (exact in doubles).

@@ -3,7 +3,17 @@
 // draw_triangles; it falls back to the reference for viewports beyond its fixed-point range.
 #pragma once
 
+#include <cstddef>
+
 #include "shadelab/pipeline.hpp"
+
+namespace shadelab::fast {
+
+/// The most draws that wait at once (PipelineContext::set_deferred): a full queue is drawn
+/// before the next draw joins it.
+inline constexpr std::size_t kMaxQueuedDraws = 256;
+
+}  // namespace shadelab::fast
 
 namespace shadelab::detail {
 

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "differential.hpp"
+#include "fast/draw_fast.hpp"
 #include "fast/simd_targets.hpp"
 #include "random_draws.hpp"
 
@@ -136,7 +137,7 @@ TEST(FastDifferential, DeferredDrawsMatchTheReference) {
       }
       ctx->apply_pending_clears(fast.fb);
       ASSERT_EQ(ctx->deferred_draws(), 0u);
-      ASSERT_LE(waited, std::size_t(64));
+      ASSERT_LE(waited, fast::kMaxQueuedDraws);
       const std::string where = "seed " + std::to_string(seed) + " threads " + std::to_string(ctx->threads()) + ": ";
       ASSERT_EQ(compare_buffers(fast.fb, ref.fb) + compare_captures(fast.capture, ref.capture), "") << where;
     }
@@ -224,19 +225,19 @@ TEST(FastDifferential, TileDepthBoundHidesOnlyWhatFailsEverywhere) {
   }
 }
 
-// Textured and untextured quads (the textured and depth-testing kernels, which skip the
-// blocks their tiles' depth bounds show hidden: raster-inl.h's block_bounds) at a few shared
-// depths or sloped, mostly GL_LESS and GL_LEQUAL (equal depths pass one and fail the other),
-// sometimes alpha-tested, blended or not writing depth; among them depth tests that raise a
-// stored depth (GL_GREATER, GL_ALWAYS, GL_NOTEQUAL, GL_GEQUAL), which the bounds must follow. Tiles with and without a
-// pending depth clear (in the tile buffer, or in place with unknown depth), over a noisy
-// depth buffer sometimes, and more draws than the queue holds. On every SIMD target (blocks
-// of 1 to 8 pixels a row). The same as the reference.
+// Textured and untextured quads (the textured and depth-testing kernels, which skip the blocks
+// their tiles' depth bounds show hidden: raster-inl.h's block_bounds) at a few shared depths or
+// sloped, mostly GL_LESS and GL_LEQUAL (equal depths pass one and fail the other), sometimes
+// alpha-tested, blended or not writing depth; among them depth tests that raise a stored depth
+// (GL_GREATER, GL_ALWAYS, GL_NOTEQUAL, GL_GEQUAL), which the bounds must follow. Tiles with and
+// without a pending depth clear (in the tile buffer, or in place with unknown depth), over a
+// noisy depth buffer sometimes, and sometimes more draws than the queue holds. On every SIMD
+// target (blocks of 1 to 8 pixels a row). The same as the reference.
 TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
   PipelineContext ctx(2);
   ctx.set_deferred(true);
-  const CompareFunc raising[] = {CompareFunc::kGreater, CompareFunc::kAlways, CompareFunc::kNotequal,
-                                 CompareFunc::kGequal, CompareFunc::kEqual};
+  const CompareFunc others[] = {CompareFunc::kGreater, CompareFunc::kAlways, CompareFunc::kNotequal,
+                                CompareFunc::kGequal, CompareFunc::kEqual};
   const float levels[] = {-0.5f, -0.2f, 0.0f, 0.2f, 0.5f};
   int textured_kernel = 0, cases = 0;
   const std::vector<std::string> targets = fast::available_simd_targets();
@@ -249,13 +250,14 @@ TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
     const Framebuffer initial = random.framebuffer(size);
     const Viewport viewport{0, 0, size.x, size.y};
     std::vector<RandomDraw> draws;
-    const int count = random.integer(10, 90);
+    const int count = random.chance(0.15) ? int(fast::kMaxQueuedDraws) + random.integer(-10, 60)
+                                          : random.integer(10, 90);
     for (int k = 0; k < count; ++k) {
       RandomDraw d;
       d.viewport = viewport;
       d.shade.lighting = false;
       const float p = float(random.uniform(0.0f, 1.0f));
-      d.frag.depth_func = p < 0.45f ? CompareFunc::kLess : p < 0.85f ? CompareFunc::kLequal : raising[random.integer(0, 4)];
+      d.frag.depth_func = p < 0.45f ? CompareFunc::kLess : p < 0.85f ? CompareFunc::kLequal : others[random.integer(0, 4)];
       d.frag.depth_write = random.chance(0.9);
       const bool textured = random.chance(0.75);
       for (int q = random.integer(1, 3); q > 0; --q) {
