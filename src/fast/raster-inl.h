@@ -515,7 +515,8 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
     float* const row_bounds = bounds ? bounds + ((y - ws.bound.y0) / kRows) * blocks_per_row : nullptr;
     for (int x = gx0; x <= t.x1; x += lanes) {
       float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
-      if (!bound || *bound > reject) block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
+      // Not `*bound > reject`: a bound or a depth that is not a number hides nothing.
+      if (!bound || !(*bound <= reject)) block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
         #pragma GCC unroll 4
