@@ -110,6 +110,7 @@ struct TrianglePlanes {
   // (clamped to [0, 255]) is the byte (to_unorm8). Equal to the colour planes' bytes for one
   // colour over the triangle; otherwise within the same few float roundings.
   Plane bytes[4];
+  std::uint32_t uniform_bytes;  // with `uniform`, the opaque kernels' one packed colour (byte_plane_colors')
   bool exact;          // the reference's arithmetic for every varying (a non-finite one)
   bool ready = false;  // set up at the first fragment that passes its tests
 };
@@ -141,6 +142,10 @@ HWY_INLINE void set_up_color_planes(const DrawJob& job, const TriSetup& t, Trian
     for (int c = 0; c < 4; ++c) {
       const Plane& p = out.color[c];
       out.bytes[c] = {p.base * 255.0f + kJustBelowHalf, p.d0 * 255.0f, p.d1 * 255.0f, p.k};
+    }
+    out.uniform_bytes = 0;
+    for (int c = 0; c < 4; ++c) {
+      out.uniform_bytes |= std::uint32_t(std::min(std::max(out.bytes[c].base, 0.0f), 255.0f)) << (8 * c);
     }
   }
 }

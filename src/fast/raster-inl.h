@@ -317,6 +317,9 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
     counts.shaded += unsigned(std::popcount(bits));
   }
   if (!planes.ready) set_up_planes(job, t, planes);
+  if constexpr (!kBlend) {  // one colour over the triangle: no weights, no planes
+    if (planes.uniform) return store_rows(DU(), hn::Set(DUB(), planes.uniform_bytes), passed, color);
+  }
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);
   if constexpr (kBlend) {
