@@ -473,53 +473,130 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   }
 }
 
+// The blocks of one row of blocks that a triangle's edges can cover, [first, last], counted
+// in blocks from the triangle's first block column; empty when first > last. From the exact
+// edge values at that column in the block row's top and bottom pixel rows and each edge's
+// step a pixel right: an edge is linear, so over a block its values lie between those at its
+// corners. The quotients are floating point, each widened by more than its rounding error:
+// a block kept that no edge covers is tested and draws nothing, so the pixels drawn are the
+// edges' (the blocks outside a sliver's or a line's box need no test).
+struct RowSpan {
+  int first, last;
+};
+
+// Per edge of a triangle: its step a pixel right, 1 / (that step times the block width), and
+// the coverage threshold.
+struct SpanEdges {
+  std::int64_t step[3];
+  double inv_block_step[3];
+  std::int64_t threshold[3];
+};
+
+HWY_INLINE RowSpan row_span(const SpanEdges& s, const std::int64_t top[3], const std::int64_t bottom[3], int lanes,
+                            int blocks) {
+  constexpr double kSlack = 0x1p-46;  // above a product's relative rounding error
+  double first = 0.0, last = double(blocks - 1);
+  #pragma GCC unroll 3
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t hi = std::max(top[k], bottom[k]), a = s.step[k], thr = s.threshold[k];
+    if (a == 0) {  // the same value along the row
+      if (hi < thr) return {0, -1};
+      continue;
+    }
+    // Block i holds a pixel inside the edge where hi + a * (i * lanes + j) >= thr for a lane j.
+    if (a > 0) {
+      const double q = double(thr - hi - a * (lanes - 1)) * s.inv_block_step[k];
+      first = std::max(first, std::ceil(q - std::fabs(q) * kSlack - kSlack));
+    } else {
+      const double q = double(thr - hi) * s.inv_block_step[k];
+      last = std::min(last, std::floor(q + std::fabs(q) * kSlack + kSlack));
+    }
+  }
+  if (first > last) return {0, -1};
+  return {int(first), int(last)};
+}
+
+// Triangles whose box in the tile holds fewer pixels neither read nor keep the blocks' depth
+// bounds: a bound left as it was stays above its block's depths (the kernels' tests only lower
+// them), and keeping it costs a horizontal maximum per block, which small triangles, sharing
+// their blocks with their neighbours, pay for far more often than they are hidden.
+constexpr int kBoundedBlocksArea = 256;
+
+// Triangles this many blocks wide and more find their rows' spans (row_span); narrower ones
+// test every block of their box (the span costs about what testing 2 to 4 blocks does).
+constexpr int kSpanBlocks = HWY_TARGET <= HWY_AVX3 ? 8 : 4;
+
 // kCoverage: a smooth line's or point's triangle on the SIMD path (draws with them take the
 // general path, never a kernel).
 template <Path kPath, BlockKernel kKernel = BlockKernel::kGeneral, bool kCoverage = false>
 void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool interior) {
   const DD dd;
-  const int lanes = int(hn::Lanes(dd));
-  VD lane_step[3], group_step[3], thr[3];
+  constexpr int lanes = int(hn::MaxLanes(DD()));  // Lanes (no x86 target's vectors are scalable), a constant
+  VD lane_step[3], thr[3];
+  SpanEdges span;
   #pragma GCC unroll 4
   for (int e = 0; e < 3; ++e) {
-    double a = double(-t.dy[e] * detail::kSubpixelOne);  // edge change one pixel right
-    lane_step[e] = hn::Mul(hn::Iota(dd, 0.0), hn::Set(dd, a));
-    group_step[e] = hn::Set(dd, a * lanes);
+    span.step[e] = -t.dy[e] * detail::kSubpixelOne;  // edge change one pixel right
+    span.threshold[e] = std::int64_t(t.threshold[e]);
+    lane_step[e] = hn::Mul(hn::Iota(dd, 0.0), hn::Set(dd, double(span.step[e])));
     thr[e] = hn::Set(dd, t.threshold[e]);
   }
   // Blocks start on even rows (tiles do): a row above the triangle's box or below it inside
   // the tile has no covered pixel, and rows past the framebuffer's bottom are masked.
   const int gx0 = t.x0 & ~(lanes - 1);
   const int gy0 = t.y0 & ~(kRows - 1);
+  const int blocks = (t.x1 - gx0) / lanes + 1;
   TrianglePlanes planes;
   GroupCounts counts;
   // The depth-testing and textured kernels skip the blocks their bounds show hidden
-  // (block_bounds).
+  // (block_bounds), for triangles of kBoundedBlocksArea pixels and more.
   float reject = 0.0f;
-  float* const bounds =
-      kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel) ? block_bounds(job, t, ws, reject) : nullptr;
+  float* const bounds = (kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel)) &&
+                                (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) >= kBoundedBlocksArea
+                            ? block_bounds(job, t, ws, reject)
+                            : nullptr;
   const int blocks_per_row = kTileSize / lanes;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
+  VD group_step[3];
   #pragma GCC unroll 4
   for (int k = 0; k < 3; ++k) {
     row_start[k] = edge_at(t, k, gx0, gy0);
     row_step[k] = t.dx[k] * detail::kSubpixelOne;
+    group_step[k] = hn::Set(dd, double(span.step[k] * lanes));
   }
-  for (int y = gy0; y <= t.y1; y += kRows) {
+  // Each row of blocks' span (row_span), when the triangle is wide enough for them to pay.
+  const bool spans = blocks >= kSpanBlocks;
+  RowSpan row_spans[kTileSize / kRows];
+  if (spans) {
+    #pragma GCC unroll 4
+    for (int k = 0; k < 3; ++k) span.inv_block_step[k] = span.step[k] ? 1.0 / double(span.step[k] * lanes) : 0.0;
+    std::int64_t top[3] = {row_start[0], row_start[1], row_start[2]}, bottom[3];
+    for (int j = 0, y = gy0; y <= t.y1; y += kRows, ++j) {
+      #pragma GCC unroll 4
+      for (int k = 0; k < 3; ++k) bottom[k] = top[k] + row_step[k] * (kRows - 1);
+      row_spans[j] = row_span(span, top, bottom, lanes, blocks);
+      #pragma GCC unroll 4
+      for (int k = 0; k < 3; ++k) top[k] += row_step[k] * kRows;
+    }
+  }
+  for (int j = 0, y = gy0; y <= t.y1; y += kRows, ++j) {
+    const RowSpan row = spans ? row_spans[j] : RowSpan{0, blocks - 1};
     VD e[kRows][3];
     #pragma GCC unroll 4
-    for (int r = 0; r < kRows; ++r) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t at_first = row_start[k] + span.step[k] * (row.first * lanes);
       #pragma GCC unroll 4
-      for (int k = 0; k < 3; ++k) {
-        e[r][k] = hn::Add(hn::Set(dd, double(row_start[k])), lane_step[k]);
-        row_start[k] += row_step[k];
-      }
+      for (int r = 0; r < kRows; ++r) e[r][k] = hn::Add(hn::Set(dd, double(at_first + row_step[k] * r)), lane_step[k]);
+      row_start[k] += row_step[k] * kRows;
     }
     float* const row_bounds = bounds ? bounds + ((y - ws.bound.y0) / kRows) * blocks_per_row : nullptr;
-    for (int x = gx0; x <= t.x1; x += lanes) {
+    for (int i = row.first; i <= row.last; ++i) {
+      const int x = gx0 + i * lanes;
       float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
       // Not `*bound > reject`: a bound or a depth that is not a number hides nothing.
-      if (!bound || !(*bound <= reject)) block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
+      if (!bound || !(*bound <= reject)) {
+        block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
+      }
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {
         #pragma GCC unroll 4

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -106,6 +107,29 @@ inline void simd_only(RandomDraw& d) {
   d.capture = false;
   d.shadow_maps.clear();
   d.shade.shadow_maps = {};
+}
+
+/// A framebuffer size of a random number of tiles across and down (within the given ranges)
+/// and up to 40 pixels more each way: the last tiles and blocks end inside the framebuffer.
+inline glm::ivec2 tiles_and_more(RandomDraws& random, glm::ivec2 columns, glm::ivec2 rows) {
+  glm::ivec2 size;
+  size.x = random.integer(columns.x, columns.y) * PipelineContext::kTileSize;
+  size.x += random.integer(0, 40);
+  size.y = random.integer(rows.x, rows.y) * PipelineContext::kTileSize;
+  size.y += random.integer(0, 40);
+  return size;
+}
+
+/// Gives a draw a random 4 x 4 RGBA texture on unit 0, nearest or linear (complete without
+/// mipmaps).
+inline void bind_random_texture(RandomDraws& random, RandomDraw& d) {
+  d.texture = std::make_shared<Texture>();
+  TextureLevel level;
+  level.width = level.height = 4;
+  for (int k = 0; k < 64; ++k) level.rgba.push_back(std::uint8_t(random.integer(0, 255)));
+  d.texture->levels.push_back(level);
+  d.texture->min_filter = d.texture->mag_filter = random.chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
+  d.shade.textures[0].texture = d.texture.get();
 }
 
 /// Renders `draws` into copies of `initial` with the reference and with each context;

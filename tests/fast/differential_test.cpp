@@ -245,8 +245,7 @@ TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
     const std::string& target = targets[seed % targets.size()];
     ASSERT_TRUE(fast::force_simd_target(target));
     RandomDraws random(9500 + seed);
-    const glm::ivec2 size{random.integer(2, 3) * PipelineContext::kTileSize + random.integer(0, 40),
-                          random.integer(1, 2) * PipelineContext::kTileSize + random.integer(0, 40)};
+    const glm::ivec2 size = test::tiles_and_more(random, {2, 3}, {1, 2});
     const Framebuffer initial = random.framebuffer(size);
     const Viewport viewport{0, 0, size.x, size.y};
     std::vector<RandomDraw> draws;
@@ -281,13 +280,7 @@ TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
         d.triangles.push_back({first, first + 2, first + 3});
       }
       if (textured) {
-        d.texture = std::make_shared<Texture>();
-        TextureLevel level;
-        level.width = level.height = 4;
-        for (int k = 0; k < 64; ++k) level.rgba.push_back(std::uint8_t(random.integer(0, 255)));
-        d.texture->levels.push_back(level);
-        d.texture->min_filter = d.texture->mag_filter = random.chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
-        d.shade.textures[0].texture = d.texture.get();
+        test::bind_random_texture(random, d);
         d.shade.texture_kept = true;  // deferred: drawn together, tile by tile
         if (random.chance(0.6)) d.frag.alpha_test = {true, CompareFunc::kGreater, 0.5f};
       } else {
@@ -382,6 +375,102 @@ TEST(FastDifferential, BlockDepthBoundsSkipAHiddenQuad) {
     }
   }
   fast::force_simd_target("");
+}
+
+// The rasterizer visits only the blocks of a row that a wide triangle's edges can cover, and
+// marks those they cover wholly (raster-inl.h's row_span): fans of slivers (a disc, whose
+// triangles' boxes are mostly empty), long thin triangles at every angle, large triangles
+// with horizontal and vertical edges, vertices on pixel centres and on the lines between
+// pixels (the fill rule's ties), in framebuffers that end inside a block, drawn by the
+// kernels, the general path (stencil) and the textured kernel on every SIMD target: the
+// fragments counted, depth, stencil and colours are the reference's.
+TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
+  PipelineContext two(2);
+  const std::vector<std::string> targets = fast::available_simd_targets();
+  int general = 0, kernels = 0;
+  for (unsigned seed = 0; seed < random_cases(16) * targets.size(); ++seed) {
+    const std::string& target = targets[seed % targets.size()];
+    ASSERT_TRUE(fast::force_simd_target(target));
+    RandomDraws random(9800 + seed);
+    const glm::ivec2 size = test::tiles_and_more(random, {1, 4}, {1, 3});
+    const Framebuffer initial = random.framebuffer(size);
+    // A point of the window snapped to a pixel's centre, its corner or anywhere, in NDC.
+    auto point = [&](glm::vec2 window) {
+      const float snap = float(random.uniform(0.0f, 1.0f));
+      if (snap < 0.3f) window = glm::floor(window) + 0.5f;
+      else if (snap < 0.5f) window = glm::floor(window);
+      return window / glm::vec2(size) * 2.0f - 1.0f;
+    };
+    auto anywhere = [&] {
+      return glm::vec2(random.uniform(-0.2f, 1.2f) * float(size.x), random.uniform(-0.2f, 1.2f) * float(size.y));
+    };
+    std::vector<RandomDraw> draws;
+    for (int n = random.integer(2, 5); n > 0; --n) {
+      RandomDraw d;
+      d.viewport = {0, 0, size.x, size.y};
+      d.shade.lighting = false;
+      const bool one_colour = random.chance(0.4);
+      const glm::vec4 colour = random.color(0.4f);
+      auto vertex = [&](glm::vec2 ndc) {
+        d.positions.emplace_back(ndc, random.uniform(-0.9f, 0.9f), 1.0f);
+        d.colors.push_back(one_colour ? colour : random.color(0.4f));
+        d.texcoords.emplace_back(random.uniform(-1.0f, 2.0f), random.uniform(-1.0f, 2.0f), 0.0f, 1.0f);
+        return std::uint32_t(d.positions.size() - 1);
+      };
+      const int shape = random.integer(0, 3);
+      if (shape == 0) {  // a disc of slivers around a centre
+        const glm::vec2 centre = anywhere();
+        const float radius = random.uniform(10.0f, 1.5f * float(std::max(size.x, size.y)));
+        const int slices = random.integer(16, 128);
+        const std::uint32_t middle = vertex(point(centre));
+        std::uint32_t previous = vertex(point(centre + glm::vec2(radius, 0.0f)));
+        for (int k = 1; k <= slices; ++k) {
+          const float a = 6.2831853f * float(k) / float(slices);
+          const std::uint32_t next = vertex(point(centre + radius * glm::vec2(std::cos(a), std::sin(a))));
+          d.triangles.push_back({middle, previous, next});
+          previous = next;
+        }
+      } else if (shape == 1) {  // long thin triangles at any angle, either winding
+        for (int k = random.integer(5, 40); k > 0; --k) {
+          const glm::vec2 a = anywhere(), b = anywhere();
+          const glm::vec2 across = glm::normalize(glm::vec2(a.y - b.y, b.x - a.x) + 1e-6f);
+          const glm::vec2 c = (random.chance(0.5) ? a : b) + across * random.uniform(-3.0f, 3.0f);
+          d.triangles.push_back({vertex(point(a)), vertex(point(b)), vertex(point(c))});
+        }
+      } else {  // large triangles with horizontal and vertical edges, and any others
+        for (int k = random.integer(1, 6); k > 0; --k) {
+          const glm::vec2 a = anywhere(), b = anywhere();
+          const glm::vec2 c = shape == 2 ? glm::vec2(a.x, b.y) : anywhere();
+          d.triangles.push_back({vertex(point(a)), vertex(point(b)), vertex(point(c))});
+        }
+      }
+      const int state = random.integer(0, 4);
+      d.frag.depth_test = state != 0;
+      d.frag.depth_func = random.chance(0.5) ? CompareFunc::kLess : CompareFunc::kLequal;
+      d.frag.blend.enabled = random.chance(0.25);
+      if (state == 3) {  // the general path: the stencil test and its operations
+        d.frag.stencil.enabled = true;
+        d.frag.stencil.func = CompareFunc(random.integer(0, 7));
+        d.frag.stencil.ref = random.integer(0, 3);
+        d.frag.stencil.pass = StencilOp::kIncr;
+        d.frag.stencil.depth_fail = StencilOp::kInvert;
+      }
+      if (state == 4) {  // the textured kernel
+        test::bind_random_texture(random, d);
+      } else {
+        d.texcoords.clear();
+      }
+      const fast::BlockKernel kernel = test::planned_kernel(d.frag, d.shade);
+      general += kernel == fast::BlockKernel::kGeneral;
+      kernels += kernel != fast::BlockKernel::kGeneral;
+      draws.push_back(std::move(d));
+    }
+    const std::string diff = test::compare_scene("seed " + std::to_string(seed) + ", " + target, initial, draws, {&two});
+    ASSERT_EQ(diff, "");
+  }
+  fast::force_simd_target("");
+  EXPECT_GT(general, 0);
+  EXPECT_GT(kernels, 0);
 }
 
 // clear_later: every tile cleared, by the draws into it (drawn after the clear) or by
