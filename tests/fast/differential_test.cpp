@@ -377,8 +377,8 @@ TEST(FastDifferential, BlockDepthBoundsSkipAHiddenQuad) {
   fast::force_simd_target("");
 }
 
-// The rasterizer visits only the blocks of a row that a wide triangle's edges can cover, and
-// marks those they cover wholly (raster-inl.h's row_span): fans of slivers (a disc, whose
+// The rasterizer visits only the blocks of a row that a wide triangle's edges can cover
+// (raster-inl.h's row_span): fans of slivers (a disc, whose
 // triangles' boxes are mostly empty), long thin triangles at every angle, large triangles
 // with horizontal and vertical edges, vertices on pixel centres and on the lines between
 // pixels (the fill rule's ties), in framebuffers that end inside a block, drawn by the
@@ -401,8 +401,9 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
       else if (snap < 0.5f) window = glm::floor(window);
       return window / glm::vec2(size) * 2.0f - 1.0f;
     };
-    auto anywhere = [&] {
-      return glm::vec2(random.uniform(-0.2f, 1.2f) * float(size.x), random.uniform(-0.2f, 1.2f) * float(size.y));
+    auto anywhere = [&] {  // (statements: the draws are the same whatever the compiler)
+      const float x = random.uniform(-0.2f, 1.2f) * float(size.x);
+      return glm::vec2(x, random.uniform(-0.2f, 1.2f) * float(size.y));
     };
     std::vector<RandomDraw> draws;
     for (int n = random.integer(2, 5); n > 0; --n) {
@@ -414,7 +415,8 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
       auto vertex = [&](glm::vec2 ndc) {
         d.positions.emplace_back(ndc, random.uniform(-0.9f, 0.9f), 1.0f);
         d.colors.push_back(one_colour ? colour : random.color(0.4f));
-        d.texcoords.emplace_back(random.uniform(-1.0f, 2.0f), random.uniform(-1.0f, 2.0f), 0.0f, 1.0f);
+        const float s = random.uniform(-1.0f, 2.0f);
+        d.texcoords.emplace_back(s, random.uniform(-1.0f, 2.0f), 0.0f, 1.0f);
         return std::uint32_t(d.positions.size() - 1);
       };
       const int shape = random.integer(0, 3);
@@ -434,7 +436,8 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
         for (int k = random.integer(5, 40); k > 0; --k) {
           const glm::vec2 a = anywhere(), b = anywhere();
           const glm::vec2 across = glm::normalize(glm::vec2(a.y - b.y, b.x - a.x) + 1e-6f);
-          const glm::vec2 c = (random.chance(0.5) ? a : b) + across * random.uniform(-3.0f, 3.0f);
+          const glm::vec2 end = random.chance(0.5) ? a : b;
+          const glm::vec2 c = end + across * random.uniform(-3.0f, 3.0f);
           d.triangles.push_back({vertex(point(a)), vertex(point(b)), vertex(point(c))});
         }
       } else {  // large triangles with horizontal and vertical edges, and any others
