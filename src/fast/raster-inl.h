@@ -551,10 +551,9 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   // The depth-testing and textured kernels skip the blocks their bounds show hidden
   // (block_bounds), for triangles of kBoundedBlocksArea pixels and more.
   float reject = 0.0f;
-  float* const bounds = (kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel)) &&
-                                (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) >= kBoundedBlocksArea
-                            ? block_bounds(job, t, ws, reject)
-                            : nullptr;
+  const bool bounded = kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel);
+  float* const bounds =
+      bounded && box_pixels(t) >= kBoundedBlocksArea ? block_bounds(job, t, ws, reject) : nullptr;
   const int blocks_per_row = kTileSize / lanes;
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
   VD group_step[3];

@@ -40,7 +40,7 @@ float tile_max_depth(const PixelTarget& target) {
 // stencil test, whose operations would count the fragments that fail.
 bool behind_tile(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool lequal) {
   TileDepthBound& b = ws.bound;
-  if (!b.on || job.counted || (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1) < kBoundedArea) return false;
+  if (!b.on || job.counted || box_pixels(t) < kBoundedArea) return false;
   if (!b.known) {
     b.known = true;
     b.max = tile_max_depth(ws.target);

@@ -29,6 +29,9 @@ struct TriSetup {
   std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
 };
 
+/// The pixels of the triangle's box in the tile.
+inline int box_pixels(const TriSetup& t) { return (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1); }
+
 /// Prepares bin entry `entry` of setup chunk `chunk` for the tile with pixel origin (tx, ty).
 /// Returns false when the triangle has no pixels in the tile (or zero snapped area).
 bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
