@@ -78,9 +78,12 @@ struct VaryingLayout {
 /// (kBlend...: glBlendFunc GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with
 /// GL_FUNC_ADD, BlendState::source_over). kTextured: one texture unit (DrawPlan::texture_unit),
 /// any filter and environment but GL_COMBINE, any depth test, alpha test and blend, without
-/// fog, stencil, logic op, per-pixel lighting or masks; these it reads per block.
+/// fog, stencil, logic op, per-pixel lighting or masks; these it reads per block. kStencil:
+/// the stencil test with any function and operations, any depth test, flat or Gouraud colours
+/// opaque or blended as kBlend, every colour channel written or none, without texture, fog,
+/// alpha test, logic op, per-pixel lighting or masks.
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
-                                        kTextured };
+                                        kTextured, kStencil };
 
 /// Whether a kernel is one of the untextured ones that test depth (GL_LESS or GL_LEQUAL,
 /// writing it); kOpaque and kBlend draw without the depth test.

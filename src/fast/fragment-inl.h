@@ -138,7 +138,7 @@ HWY_INLINE void set_up_color_planes(const DrawJob& job, const TriSetup& t, Trian
     out.uniform = out.uniform && p.d0 == 0.0f && p.d1 == 0.0f;
     out.uniform_color[c] = p.base > 0.0f ? std::min(p.base, 1.0f) : 0.0f;  // clamp_unit
   }
-  if (kernel_opaque(job.plan.kernel)) {
+  if (kernel_opaque(job.plan.kernel) || job.plan.kernel == BlockKernel::kStencil) {
     for (int c = 0; c < 4; ++c) {
       const Plane& p = out.color[c];
       out.bytes[c] = {p.base * 255.0f + kJustBelowHalf, p.d0 * 255.0f, p.d1 * 255.0f, p.k};

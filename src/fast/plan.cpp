@@ -52,13 +52,15 @@ bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
   if (p.textured) return single_unit_textured(p, f) ? BlockKernel::kTextured : BlockKernel::kGeneral;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || f.stencil.enabled || f.alpha_one) {
+  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || f.alpha_one || p.scalar_fragments || p.phong) {
     return BlockKernel::kGeneral;
   }
-  if (p.scalar_fragments || p.phong || !(f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3])) {
-    return BlockKernel::kGeneral;
+  const bool every_channel = f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3];
+  if (f.stencil.enabled && !every_channel && !p.writes_color) {
+    return BlockKernel::kStencil;  // a mask drawn into the stencil buffer
   }
-  if (f.blend.enabled && !f.blend.source_over()) return BlockKernel::kGeneral;
+  if (!every_channel || (f.blend.enabled && !f.blend.source_over())) return BlockKernel::kGeneral;
+  if (f.stencil.enabled) return BlockKernel::kStencil;
   if (!f.depth_test) return f.blend.enabled ? BlockKernel::kBlend : BlockKernel::kOpaque;  // 2D drawing
   if (!f.depth_write || !(less || lequal)) return BlockKernel::kGeneral;
   if (!f.blend.enabled) return less ? BlockKernel::kOpaqueLess : BlockKernel::kOpaqueLequal;

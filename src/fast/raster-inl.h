@@ -168,42 +168,66 @@ HWY_INLINE hn::Vec<DUB> stencil_op(StencilOp op, hn::Vec<DUB> v, hn::Vec<DUB> re
   return v;
 }
 
-/// fragment_ops.cpp's depth_stencil_test for the lanes `bits` of a block: the stencil test,
-/// then the depth test for the lanes it passes, each lane's stencil value updated by the
-/// operation of its outcome (through the write mask) and its depth written where both pass.
-/// Returns the lanes that pass both.
-HWY_INLINE unsigned stencil_and_depth(const FragmentState& fs, VB z, unsigned bits, BlockPixels& g) {
+/// depth_compare's for stencil values (0 to 255) in 32-bit lanes: `ref` func `value`.
+HWY_INLINE hn::Mask<DIB> stencil_compare(CompareFunc func, hn::Vec<DIB> ref, hn::Vec<DIB> value) {
+  const DIB di;
+  switch (func) {
+    case CompareFunc::kNever: return hn::FirstN(di, 0);
+    case CompareFunc::kLess: return hn::Lt(ref, value);
+    case CompareFunc::kEqual: return hn::Eq(ref, value);
+    case CompareFunc::kLequal: return hn::Not(hn::Gt(ref, value));  // (integer Le is newer than Highway 1.0)
+    case CompareFunc::kGreater: return hn::Gt(ref, value);
+    case CompareFunc::kNotequal: return hn::Not(hn::Eq(ref, value));
+    case CompareFunc::kGequal: return hn::Not(hn::Lt(ref, value));
+    case CompareFunc::kAlways: break;
+  }
+  return hn::FirstN(di, hn::Lanes(di));
+}
+
+/// Whether a draw's stencil operations can change a stencil value.
+inline bool writes_stencil(const StencilState& s) {
+  return s.write_mask != 0 && (s.fail != StencilOp::kKeep || s.depth_fail != StencilOp::kKeep || s.pass != StencilOp::kKeep);
+}
+
+/// fragment_ops.cpp's depth_stencil_test for the lanes `bits` of a block whose rows are
+/// `depth` and `stencil`: the stencil test, then the depth test for the lanes it passes, each
+/// lane's stencil value updated by the operation of its outcome (through the write mask) and
+/// its depth written where both pass. Returns the lanes that pass both.
+HWY_INLINE unsigned stencil_and_depth(const FragmentState& fs, VB z, unsigned bits, float* const depth[kRows],
+                                      std::uint8_t* const stencil[kRows]) {
   const DF df;
   const DB db;
-  const DUB du;
+  const DIB di;
   const hn::Rebind<std::uint8_t, DU> d8;
+  const hn::RebindToSigned<DU> dis;
   const StencilState& s = fs.stencil;
-  const hn::Vec<DUB> stored = join_rows(DU(), hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[0])),
-                                        hn::PromoteTo(DU(), hn::LoadU(d8, g.stencil[kRows - 1])));
-  const auto value_mask = hn::Set(du, s.value_mask);
-  const VB masked = hn::ConvertTo(db, hn::BitCast(DIB(), hn::And(stored, value_mask)));
+  const hn::Vec<DIB> stored = join_rows(dis, hn::PromoteTo(dis, hn::LoadU(d8, stencil[0])),
+                                        hn::PromoteTo(dis, hn::LoadU(d8, stencil[kRows - 1])));
+  const auto value_mask = hn::Set(di, s.value_mask);
   const MB live = block_mask(bits);
-  const MB stencil_pass = hn::And(live, depth_compare(s.func, hn::Set(db, float(s.ref & s.value_mask)), masked));
+  const MB stencil_pass =
+      hn::And(live, hn::RebindMask(db, stencil_compare(s.func, hn::Set(di, s.ref & s.value_mask), hn::And(stored, value_mask))));
   MB depth_pass = stencil_pass;
   if (fs.depth_test && !hn::AllFalse(db, stencil_pass)) {
-    depth_pass = hn::And(stencil_pass, depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
+    depth_pass = hn::And(stencil_pass, depth_compare(fs.depth_func, z, load_rows(df, depth)));
     if (fs.depth_write) {
       const unsigned written = block_bits(depth_pass);
-      if (written) store_rows(df, z, written, g.depth);
+      if (written) store_rows(df, z, written, depth);
     }
   }
-  const auto ref = hn::Set(du, s.ref);
-  const auto fail = hn::RebindMask(du, hn::AndNot(stencil_pass, live));
-  const auto depth_fail = hn::RebindMask(du, hn::AndNot(depth_pass, stencil_pass));
-  const auto pass = hn::RebindMask(du, depth_pass);
-  auto next = hn::IfThenElse(fail, stencil_op(s.fail, stored, ref), stored);
-  next = hn::IfThenElse(depth_fail, stencil_op(s.depth_fail, stored, ref), next);
-  next = hn::IfThenElse(pass, stencil_op(s.pass, stored, ref), next);
-  const auto write_mask = hn::Set(du, s.write_mask);
-  next = hn::Or(hn::AndNot(write_mask, stored), hn::And(next, write_mask));
-  #pragma GCC unroll 4
-  for (int r = 0; r < kRows; ++r) {
-    hn::StoreU(hn::DemoteTo(d8, hn::BitCast(hn::RebindToSigned<DU>(), row_of(DU(), next, r))), d8, g.stencil[r]);
+  if (writes_stencil(s)) {
+    const DUB du;
+    const auto old = hn::BitCast(du, stored), ref = hn::Set(du, s.ref);
+    const auto fail = hn::RebindMask(du, hn::AndNot(stencil_pass, live));
+    const auto depth_fail = hn::RebindMask(du, hn::AndNot(depth_pass, stencil_pass));
+    const auto pass = hn::RebindMask(du, depth_pass);
+    auto next = hn::IfThenElse(fail, stencil_op(s.fail, old, ref), old);
+    next = hn::IfThenElse(depth_fail, stencil_op(s.depth_fail, old, ref), next);
+    next = hn::IfThenElse(pass, stencil_op(s.pass, old, ref), next);
+    const auto write_mask = hn::Set(du, s.write_mask);
+    next = hn::Or(hn::AndNot(write_mask, old), hn::And(next, write_mask));
+    #pragma GCC unroll 4
+    for (int r = 0; r < kRows; ++r) hn::StoreU(hn::DemoteTo(d8, hn::BitCast(dis, row_of(DU(), next, r))), d8, stencil[r]);
   }
   return block_bits(depth_pass);
 }
@@ -244,7 +268,7 @@ HWY_INLINE void simd_block(const DrawJob& job, const TriSetup& t, const PixelTar
     passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, color.c[3]);
   }
   if (fs.stencil.enabled) {
-    if (passed) passed = stencil_and_depth(fs, z, passed, g);
+    if (passed) passed = stencil_and_depth(fs, z, passed, g.depth, g.stencil);
   } else if (fs.depth_test && passed) {
     MB live = hn::And(block_mask(passed), depth_compare(fs.depth_func, z, load_rows(df, g.depth)));
     passed = block_bits(live);
@@ -278,6 +302,26 @@ HWY_INLINE unsigned kept_lanes(const DrawJob& job, const TriSetup& t, int x, int
     kept |= m << (r * lanes);
   }
   return kept;
+}
+
+// The kernels' colours for the lanes `passed` of a block whose colour rows are `color`: the
+// triangle's one packed colour, the byte planes' (kBlend false: opaque) or source alpha over
+// the framebuffer's (kBlend true).
+template <bool kBlend>
+HWY_INLINE void kernel_colors(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, unsigned passed,
+                              const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, std::uint32_t* const color[kRows]) {
+  if (!planes.ready) set_up_planes(job, t, planes);
+  if constexpr (!kBlend) {  // one colour over the triangle: no weights, no planes
+    if (planes.uniform) return store_rows(DU(), hn::Set(DUB(), planes.uniform_bytes), passed, color);
+  }
+  const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);
+  if constexpr (kBlend) {
+    const Rgba src = clamped(vertex_color(t, planes, w));
+    store_rows(DU(), pack_unorm8(blend_src_alpha(src, unit_colors(load_rows(DU(), color)))), passed, color);
+  } else {
+    store_rows(DU(), byte_plane_colors(planes, w), passed, color);
+  }
 }
 
 // A block of a triangle wholly inside the framebuffer, by one of the kernels compiled for
@@ -316,18 +360,34 @@ HWY_INLINE void kernel_block(const DrawJob& job, const TriSetup& t, const PixelT
     counts.fragments += unsigned(std::popcount(bits));
     counts.shaded += unsigned(std::popcount(bits));
   }
-  if (!planes.ready) set_up_planes(job, t, planes);
-  if constexpr (!kBlend) {  // one colour over the triangle: no weights, no planes
-    if (planes.uniform) return store_rows(DU(), hn::Set(DUB(), planes.uniform_bytes), passed, color);
+  kernel_colors<kBlend>(job, t, planes, passed, b0, b1, f0, f1, color);
+}
+
+// A block of a stencil-tested triangle wholly inside the framebuffer, by the kStencil kernel:
+// simd_block's operations for its state (the stencil and depth tests, whatever their
+// functions and operations; then the colours of the lanes both pass, opaque or blended by
+// source alpha, unless every channel is masked), with the stencil values in 32-bit integers.
+HWY_INLINE void stencil_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
+                              GroupCounts& counts, int x, int y, unsigned bits, const VD b0[kRows],
+                              const VD b1[kRows], VB f0, VB f1, VB z) {
+  const FragmentState& fs = *job.frag;
+  const std::size_t first = std::size_t(y - target.y0) * target.stride + std::size_t(x - target.x0);
+  float* depth[kRows];
+  std::uint8_t* stencil[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    depth[r] = fs.depth_test ? target.depth + first + std::size_t(r) * target.stride : nullptr;
+    stencil[r] = target.stencil + std::size_t(y + r) * target.stencil_stride + std::size_t(x);
   }
-  const Weights w = perspective_weights(t, b0, b1, f0, f1);
-  if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);
-  if constexpr (kBlend) {
-    const Rgba src = clamped(vertex_color(t, planes, w));
-    store_rows(DU(), pack_unorm8(blend_src_alpha(src, unit_colors(load_rows(DU(), color)))), passed, color);
-  } else {
-    store_rows(DU(), byte_plane_colors(planes, w), passed, color);
-  }
+  const unsigned passed = stencil_and_depth(fs, z, bits, depth, stencil);
+  counts.fragments += unsigned(std::popcount(bits));
+  counts.shaded += unsigned(std::popcount(passed));
+  if (!passed || !job.plan.writes_color) return;
+  std::uint32_t* color[kRows];
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) color[r] = target.color + first + std::size_t(r) * target.stride;
+  if (fs.blend.enabled) return kernel_colors<true>(job, t, planes, passed, b0, b1, f0, f1, color);
+  kernel_colors<false>(job, t, planes, passed, b0, b1, f0, f1, color);
 }
 
 // A block of a triangle wholly inside the framebuffer by the kTextured kernel: simd_block's
@@ -465,6 +525,8 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     }
   } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kTextured) {
     textured_block(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
+  } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kStencil) {
+    stencil_block(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
     kernel_block<kKernel>(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z, bound);
   } else {

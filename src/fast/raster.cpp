@@ -101,6 +101,9 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kOpaque: return raster_kernel<BlockKernel::kOpaque>(job, t, ws);
       case BlockKernel::kBlend: return raster_kernel<BlockKernel::kBlend>(job, t, ws);
       case BlockKernel::kTextured: return raster_textured(job, t, ws);
+      case BlockKernel::kStencil:
+        raster_path<Path::kInterior, BlockKernel::kStencil>(job, t, ws, true);
+        return depth_written(job, ws);
       case BlockKernel::kGeneral: break;
     }
     raster_general(job, t, ws, true);

@@ -382,12 +382,13 @@ TEST(FastDifferential, BlockDepthBoundsSkipAHiddenQuad) {
 // triangles' boxes are mostly empty), long thin triangles at every angle, large triangles
 // with horizontal and vertical edges, vertices on pixel centres and on the lines between
 // pixels (the fill rule's ties), in framebuffers that end inside a block, drawn by the
-// kernels, the general path (stencil) and the textured kernel on every SIMD target: the
+// kernels (the stencil and textured ones among them) and the general path (a colour channel
+// masked) on every SIMD target: the
 // fragments counted, depth, stencil and colours are the reference's.
 TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
   PipelineContext two(2);
   const std::vector<std::string> targets = fast::available_simd_targets();
-  int general = 0, kernels = 0;
+  int general = 0, stencil = 0, kernels = 0;
   for (unsigned seed = 0; seed < random_cases(16) * targets.size(); ++seed) {
     const std::string& target = targets[seed % targets.size()];
     ASSERT_TRUE(fast::force_simd_target(target));
@@ -447,17 +448,18 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
           d.triangles.push_back({vertex(point(a)), vertex(point(b)), vertex(point(c))});
         }
       }
-      const int state = random.integer(0, 4);
+      const int state = random.integer(0, 5);
       d.frag.depth_test = state != 0;
       d.frag.depth_func = random.chance(0.5) ? CompareFunc::kLess : CompareFunc::kLequal;
       d.frag.blend.enabled = random.chance(0.25);
-      if (state == 3) {  // the general path: the stencil test and its operations
+      if (state == 3) {  // the stencil kernel: the stencil test and its operations
         d.frag.stencil.enabled = true;
         d.frag.stencil.func = CompareFunc(random.integer(0, 7));
         d.frag.stencil.ref = random.integer(0, 3);
         d.frag.stencil.pass = StencilOp::kIncr;
         d.frag.stencil.depth_fail = StencilOp::kInvert;
       }
+      if (state == 5) d.frag.color_mask[random.integer(0, 3)] = false;  // the general path
       if (state == 4) {  // the textured kernel
         test::bind_random_texture(random, d);
       } else {
@@ -465,6 +467,7 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
       }
       const fast::BlockKernel kernel = test::planned_kernel(d.frag, d.shade);
       general += kernel == fast::BlockKernel::kGeneral;
+      stencil += kernel == fast::BlockKernel::kStencil;
       kernels += kernel != fast::BlockKernel::kGeneral;
       draws.push_back(std::move(d));
     }
@@ -473,7 +476,97 @@ TEST(FastDifferential, RowSpansCoverTheEdgesPixels) {
   }
   fast::force_simd_target("");
   EXPECT_GT(general, 0);
+  EXPECT_GT(stencil, 0);
   EXPECT_GT(kernels, 0);
+}
+
+// The stencil kernel (BlockKernel::kStencil) against the reference on every SIMD target: every
+// stencil function and operation, value and write masks, stencil values at 0 and 255 (where
+// the clamped and wrapping operations part), with and without the depth test (any function,
+// written or not), colours opaque, blended by source alpha or not written at all: the
+// fragments counted, stencil, depth and colours are the reference's.
+TEST(FastDifferential, StencilKernelMatchesTheReference) {
+  PipelineContext two(2);
+  const std::vector<std::string> targets = fast::available_simd_targets();
+  int stencil_kernel = 0, masks_only = 0;
+  for (unsigned seed = 0; seed < random_cases(24) * targets.size(); ++seed) {
+    const std::string& target = targets[seed % targets.size()];
+    ASSERT_TRUE(fast::force_simd_target(target));
+    RandomDraws random(9900 + seed);
+    const glm::ivec2 size = test::tiles_and_more(random, {1, 3}, {1, 2});
+    Framebuffer initial = random.framebuffer(size);
+    constexpr std::uint8_t kValues[] = {0, 1, 2, 3, 127, 254, 255};
+    for (std::uint8_t& v : initial.stencil) v = kValues[random.integer(0, 6)];
+    std::vector<RandomDraw> draws;
+    for (int n = random.integer(2, 5); n > 0; --n) {
+      RandomDraw d = random.draw(size);
+      test::simd_only(d);
+      if (d.shade.shading == ShadingMode::kPhong) d.shade.shading = ShadingMode::kGouraud;
+      StencilState& s = d.frag.stencil;
+      s.enabled = true;
+      s.func = CompareFunc(random.integer(0, 7));
+      s.ref = kValues[random.integer(0, 6)];
+      s.value_mask = random.chance(0.5) ? 0xff : std::uint8_t(random.integer(0, 255));
+      s.write_mask = random.chance(0.5) ? 0xff : std::uint8_t(random.integer(0, 255));
+      s.fail = StencilOp(random.integer(0, 7));
+      s.depth_fail = StencilOp(random.integer(0, 7));
+      s.pass = StencilOp(random.integer(0, 7));
+      d.frag.depth_test = random.chance(0.8);
+      d.frag.depth_func = CompareFunc(random.integer(0, 7));
+      d.frag.depth_write = random.chance(0.7);
+      const bool colour = random.chance(0.7);
+      for (bool& m : d.frag.color_mask) m = colour;
+      d.frag.blend = {random.chance(0.3), BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
+      const fast::BlockKernel kernel = test::planned_kernel(d.frag, d.shade);
+      stencil_kernel += kernel == fast::BlockKernel::kStencil;
+      masks_only += kernel == fast::BlockKernel::kStencil && !colour;
+      draws.push_back(std::move(d));
+    }
+    const std::string diff = test::compare_scene("seed " + std::to_string(seed) + ", " + target, initial, draws, {&two});
+    ASSERT_EQ(diff, "");
+  }
+  fast::force_simd_target("");
+  EXPECT_GT(stencil_kernel, 20);
+  EXPECT_GT(masks_only, 5);
+}
+
+// The kernel make_plan chooses for an untextured stencil-tested draw: kStencil with every
+// colour channel written (opaque or blended by source alpha) or none; the general path for
+// some channels masked, another blend, the alpha test, fog, a logic op or per-pixel lighting.
+TEST(FastDifferential, TheStencilKernelOnlyWithoutOtherState) {
+  auto kernel = [&](auto&& change) {
+    FragmentState frag;
+    ShadeState shade;
+    shade.lighting = false;
+    frag.stencil.enabled = true;
+    change(frag, shade);
+    return test::planned_kernel(frag, shade);
+  };
+  using fast::BlockKernel;
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState&) {}), BlockKernel::kStencil);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) {
+              f.depth_func = CompareFunc::kGreater;
+              f.depth_write = false;
+              f.blend.enabled = true;
+            }),
+            BlockKernel::kStencil);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) {
+              for (bool& m : f.color_mask) m = false;
+              f.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
+            }),
+            BlockKernel::kStencil);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.color_mask[3] = false; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.blend = {true, BlendFactor::kOne, BlendFactor::kOne}; }),
+            BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.alpha_test = {true, CompareFunc::kGreater, 0.5f}; }),
+            BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) {
+              s.lighting = true;
+              s.shading = ShadingMode::kPhong;
+            }),
+            BlockKernel::kGeneral);
 }
 
 // clear_later: every tile cleared, by the draws into it (drawn after the clear) or by
