@@ -304,5 +304,8 @@ void expand_varyings(const VaryingLayout& layout, const float* varyings, detail:
 
 /// Packs reference attribute slots back into varyings.
 void compact_varyings(const VaryingLayout& layout, const detail::Attribs& attr, float* out);
+/// The reference's attribute slots (bit i: slot i of detail::Attribs) that `layout` carries:
+/// those expand_varyings fills and compact_varyings reads.
+std::uint64_t attribute_slots(const VaryingLayout& layout);
 
 }  // namespace shadelab::fast

@@ -223,4 +223,20 @@ void compact_varyings(const VaryingLayout& l, const detail::Attribs& a, float* v
   if (l.fog >= 0) v[l.fog] = a[detail::kFogCoord];
 }
 
+std::uint64_t attribute_slots(const VaryingLayout& l) {
+  std::uint64_t slots = 0;
+  auto take_slots = [&](int present, int first, int n) {
+    if (present >= 0) slots |= ((std::uint64_t(1) << n) - 1) << first;
+  };
+  take_slots(l.front_color, detail::kFrontColor, 4);
+  take_slots(l.back_color, detail::kBackColor, 4);
+  take_slots(l.front_secondary, detail::kFrontSecondary, 3);
+  take_slots(l.back_secondary, detail::kBackSecondary, 3);
+  take_slots(l.eye_position, detail::kEyePosition, 3);
+  take_slots(l.eye_normal, detail::kEyeNormal, 3);
+  for (int u = 0; u < kMaxTextureUnits; ++u) take_slots(l.texcoord[u], detail::kTexCoord + 4 * u, 4);
+  take_slots(l.fog, detail::kFogCoord, 1);
+  return slots;
+}
+
 }  // namespace shadelab::fast

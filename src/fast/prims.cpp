@@ -87,6 +87,7 @@ void setup_prims(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
   if (!unfilled) begin = std::max(begin, triangles);
   if (begin >= end) return;
   PrimAssembler assembler(*job.frag, job.viewport, job.projection, job.fb_height, job.plan.flat, stipple);
+  assembler.interpolate_only(attribute_slots(job.plan.layout));  // compact_varyings reads no other
   ChunkSink sink(job, chunk);
   for (std::size_t item = begin; item < end; ++item) {
     if (item < triangles) {

@@ -4,6 +4,7 @@
 #include "raster/prims.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace shadelab::detail {
@@ -31,13 +32,18 @@ PrimVertex screen_lerp(const PrimVertex& a, const PrimVertex& b, float t) {
 
 // The corner of a line's quadrilateral at parameter t: depth and 1/w linear along the line,
 // the other attributes perspective-correct (a/w and 1/w linear, then divided), as llvmpipe
-// sets up a line's planes.
-void line_corner(PieceCorner& c, const PrimVertex& a, const PrimVertex& b, float t) {
+// sets up a line's planes. Only the attribute slots in `slots`.
+void line_corner(PieceCorner& c, const PrimVertex& a, const PrimVertex& b, float t, std::uint64_t slots) {
   c.z = a.z + t * (b.z - a.z);
   c.inv_w = a.inv_w + t * (b.inv_w - a.inv_w);
-  for (int i = 0; i < kAttrCount; ++i) {
+  auto corner = [&](int i) {
     const float pa = a.attr[i] * a.inv_w, pb = b.attr[i] * b.inv_w;
     c.attr[i] = (pa + t * (pb - pa)) / c.inv_w;
+  };
+  if (slots == PrimAssembler::kEverySlot) {
+    for (int i = 0; i < kAttrCount; ++i) corner(i);
+  } else {
+    for (; slots; slots &= slots - 1) corner(std::countr_zero(slots));
   }
 }
 
@@ -205,7 +211,7 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
     // The corners across the line from each other lie at the same t: interpolated once.
     const int same = k > 0 && q.t[k] == q.t[k - 1] ? k - 1 : k == 3 && q.t[3] == q.t[0] ? 0 : -1;
     if (same < 0) {
-      line_corner(c, a, b, q.t[k]);
+      line_corner(c, a, b, q.t[k], slots_);
     } else {
       c.z = p.corner[same].z, c.inv_w = p.corner[same].inv_w, c.attr = p.corner[same].attr;
     }

@@ -94,6 +94,13 @@ class PrimAssembler {
   }
   std::uint32_t stipple_counter() const { return stipple_counter_; }
 
+  /// Every attribute slot (bit i: slot i of Attribs).
+  static constexpr std::uint64_t kEverySlot = (std::uint64_t(1) << kAttrCount) - 1;
+  /// Interpolates only the slots set in `slots` at the corners of aliased lines; the others
+  /// are left as they were (for a caller that reads no other slot of a piece). kEverySlot by
+  /// default.
+  void interpolate_only(std::uint64_t slots) { slots_ = slots; }
+
  private:
   void polygon(std::vector<PrimVertex>& poly, std::uint32_t provoking, PieceSink& sink);
   void fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std::uint32_t provoking, PieceSink& sink);
@@ -114,6 +121,7 @@ class PrimAssembler {
   bool flat_;
   ClipSpace planes_;
   std::uint32_t stipple_counter_;
+  std::uint64_t slots_ = kEverySlot;
   Attribs flat_attr_{};  // flat shading: the current primitive's provoking colours
   Piece piece_;
   std::vector<PrimVertex> poly_, scratch_;
