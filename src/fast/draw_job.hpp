@@ -168,6 +168,10 @@ struct DrawPlan {
   bool coverage = false;         ///< smooth lines or points: alpha times their coverage
   BlockKernel kernel = BlockKernel::kGeneral;
   int texture_unit = 0;  ///< kTextured's unit
+  /// kTextured writes its unit's filtered bytes as the colour (and alpha-tests their alpha
+  /// byte): GL_REPLACE of an RGBA texture filtered by the 8-bit sampler, without blending
+  /// (byte b is b / 255 in the float chain, which packs it back to b).
+  bool texel_bytes = false;
   LightingSetup lighting;
 };
 

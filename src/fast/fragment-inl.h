@@ -427,14 +427,20 @@ HWY_INLINE hn::Vec<DUB> byte_plane_colors(const TrianglePlanes& planes, const We
   return hn::Or(hn::Or(b[0], hn::ShiftLeft<8>(b[1])), hn::Or(hn::ShiftLeft<16>(b[2]), hn::ShiftLeft<24>(b[3])));
 }
 
-/// The lanes whose alpha passes the alpha test (fragment_ops.cpp's alpha_test): the alpha
-/// as its 8-bit value, in a float, against the reference's (and above the floor's).
-HWY_INLINE unsigned alpha_bits(const AlphaTestState& a, float ref_byte, VB alpha) {
+/// The lanes whose alpha, as its 8-bit value `byte` in a float, passes the alpha test
+/// (fragment_ops.cpp's alpha_test): against the reference's (and above the floor's).
+HWY_INLINE unsigned alpha_byte_bits(const AlphaTestState& a, float ref_byte, VB byte) {
   const DB db;
-  const VB byte = hn::Trunc(hn::Add(hn::Mul(clamp_unit(alpha), hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf)));
   const unsigned bits = block_bits(depth_compare(a.func, byte, hn::Set(db, ref_byte)));
   if (a.floor < 0.0f) return bits;
   return bits & block_bits(hn::Gt(byte, hn::Set(db, float(detail::unorm8(a.floor)))));
+}
+
+/// alpha_byte_bits for the alpha in [0, 1] (clamped first).
+HWY_INLINE unsigned alpha_bits(const AlphaTestState& a, float ref_byte, VB alpha) {
+  const DB db;
+  return alpha_byte_bits(
+      a, ref_byte, hn::Trunc(hn::Add(hn::Mul(clamp_unit(alpha), hn::Set(db, 255.0f)), hn::Set(db, kJustBelowHalf))));
 }
 
 /// fragment_ops.cpp's logic_op on RGBA8 words.

@@ -178,6 +178,9 @@ void make_plan(DrawJob& job) {
   for (int u = 0; u < kMaxTextureUnits; ++u) {
     if (p.texture[u].texture) p.texture_unit = u;
   }
+  const TexturePlan& unit = p.texture[p.texture_unit];
+  p.texel_bytes = p.kernel == BlockKernel::kTextured && unit.eight_bit && unit.env == TextureEnvMode::kReplace &&
+                  unit.format == TextureFormat::kRgba && !frag.blend.enabled;
   p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);

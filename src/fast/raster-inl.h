@@ -390,6 +390,17 @@ HWY_INLINE void stencil_block(const DrawJob& job, const TriSetup& t, const Pixel
   kernel_colors<false>(job, t, planes, passed, b0, b1, f0, f1, color);
 }
 
+// The kTextured kernel's depth for the lanes `passed` of a block whose depths were `stored`:
+// written where the draw writes depth, and the block's bound kept.
+HWY_INLINE void textured_depth(const FragmentState& fs, VB z, VB stored, unsigned passed, float* const depth[kRows],
+                               float* bound) {
+  if (fs.depth_test && fs.depth_write) {
+    store_rows(DF(), z, passed, depth);
+    stored = hn::IfThenElse(block_mask(passed), z, stored);
+  }
+  if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+}
+
 // A block of a triangle wholly inside the framebuffer by the kTextured kernel: simd_block's
 // operations for its state (the depth test first, the colours of the lanes it passes, the
 // alpha test, then depth and colour written), block_color's for one unit. `bound`, when not
@@ -423,6 +434,20 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
   const int unit = job.plan.texture_unit;
   const TexturePlan& tp = job.plan.texture[unit];
+  if (job.plan.texel_bytes && !planes.has_secondary) {  // the filtered bytes are the colours
+    const hn::Vec<DUB> words = sample_block_words(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed));
+    if (job.plan.alpha_test) {
+      const VB alpha = hn::ConvertTo(DB(), hn::BitCast(DIB(), hn::ShiftRight<24>(words)));
+      passed &= alpha_byte_bits(fs.alpha_test, job.plan.alpha_ref, alpha);
+    }
+    counts.shaded += unsigned(std::popcount(passed));
+    if (!passed) {
+      if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+      return;
+    }
+    textured_depth(fs, z, stored, passed, depth, bound);
+    return store_rows(DU(), words, passed, color);
+  }
   // textured_color's for one unit (no GL_COMBINE, logic op or per-pixel lighting).
   const bool alpha_replaced =
       tp.env == TextureEnvMode::kReplace && tp.format != TextureFormat::kLuminance && tp.format != TextureFormat::kRgb;
@@ -443,11 +468,7 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
     if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
     return;
   }
-  if (fs.depth_test && fs.depth_write) {
-    store_rows(df, z, passed, depth);
-    stored = hn::IfThenElse(block_mask(passed), z, stored);
-  }
-  if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
+  textured_depth(fs, z, stored, passed, depth, bound);
   write_colors(job, c, passed, color);
 }
 

@@ -344,6 +344,11 @@ HWY_INLINE Bytes8 select8(hn::Mask<DUB> m, const Bytes8& a, const Bytes8& b) {
 HWY_INLINE void bytes_to_float(const Bytes8& v, VB out[4]) {
   for (int c = 0; c < 4; ++c) out[c] = hn::ConvertTo(DB(), v.c[c]);
 }
+HWY_INLINE hn::Vec<DUB> bytes_to_words(const Bytes8& v) {
+  hn::Vec<DUB> word = hn::Zero(DUB());
+  for (int c = 0; c < 4; ++c) word = hn::Or(word, hn::ShiftLeftSame(hn::BitCast(DUB(), v.c[c]), 8 * c));
+  return word;
+}
 #else
 using DW = hn::Repartition<std::uint16_t, DUB>;
 struct Bytes8 {
@@ -384,6 +389,11 @@ HWY_INLINE void bytes_to_float(const Bytes8& v, VB out[4]) {
   out[1] = hn::ConvertTo(DB(), hn::BitCast(di, hn::And(ga, low)));
   out[2] = hn::ConvertTo(DB(), hn::BitCast(di, hn::ShiftRight<16>(rb)));
   out[3] = hn::ConvertTo(DB(), hn::BitCast(di, hn::ShiftRight<16>(ga)));
+}
+/// The RGBA8 words of bytes (unpack8's inverse).
+HWY_INLINE hn::Vec<DUB> bytes_to_words(const Bytes8& v) {
+  const DUB du;
+  return hn::Or(hn::BitCast(du, v.rb), hn::ShiftLeft<8>(hn::BitCast(du, v.ga)));
 }
 #endif
 
@@ -490,22 +500,46 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
   for (int k = 0; k < 4; ++k) out[k] = hn::Mul(out[k], hn::Set(db, 1.0f / 255.0f));
 }
 
+/// A block's texture coordinates (s, t, r) as the samplers take them.
+struct BlockCoords {
+  VB s, t, r;
+  QuadDerivatives d;  // where the texture needs a level of detail (TexturePlan::lod)
+};
+
+/// The block's coordinates on texture unit `unit` (on a cube map's face), as sample_block
+/// samples them.
+HWY_INLINE BlockCoords block_coords(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
+                                    const Weights& w, int x, int y, const VD e[kRows][3]) {
+  const DB db;
+  const TexturePlan& tp = job.plan.texture[unit];
+  BlockCoords c;
+  c.r = hn::Zero(db);
+  project(db, planes, w.f0, w.f1, c.s, c.t, c.r);
+  if (tp.lod) {
+    c.d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(c.s, c.t, c.r, planes.with_r)
+                                                : quad_derivatives_anywhere(job, t, planes, x, y, e);
+  }
+  if (tp.cube) cube_face(c.s, c.t, c.r);
+  return c;
+}
+
 /// The filtered texels of texture unit `unit` for the block's fragments, at each lane's
 /// coordinates. `e` are the rows' edge values, `w` their perspective weights; `live` the lanes
 /// whose colour is used.
 HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB texel[4]) {
-  const DB db;
   const TexturePlan& tp = job.plan.texture[unit];
-  VB s, tc, r = hn::Zero(db);
-  project(db, planes, w.f0, w.f1, s, tc, r);
-  QuadDerivatives d;
-  if (tp.lod) {
-    d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(s, tc, r, planes.with_r)
-                                              : quad_derivatives_anywhere(job, t, planes, x, y, e);
-  }
-  if (tp.cube) cube_face(s, tc, r);
-  sample_texture(tp, s, tc, r, tp.lod ? &d : nullptr, live, texel);
+  const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
+  sample_texture(tp, c.s, c.t, c.r, tp.lod ? &c.d : nullptr, live, texel);
+}
+
+/// sample_block's texels as RGBA8 words, for a texture the 8-bit sampler filters
+/// (TexturePlan::eight_bit): its bytes, before they are made floats.
+HWY_INLINE hn::Vec<DUB> sample_block_words(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
+                                           const Weights& w, int x, int y, const VD e[kRows][3], MB live) {
+  const TexturePlan& tp = job.plan.texture[unit];
+  const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
+  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, tp.lod ? &c.d : nullptr, live));
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE

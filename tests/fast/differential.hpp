@@ -17,8 +17,8 @@
 
 namespace shadelab::test {
 
-/// The block kernel make_plan chooses for a triangle draw with this state (8 x 8 pixels).
-inline fast::BlockKernel planned_kernel(const FragmentState& frag, const ShadeState& shade) {
+/// The plan make_plan makes for a triangle draw with this state (8 x 8 pixels).
+inline fast::DrawPlan planned(const FragmentState& frag, const ShadeState& shade) {
   Framebuffer fb;
   fb.resize(8, 8);
   VertexInput in;
@@ -28,7 +28,12 @@ inline fast::BlockKernel planned_kernel(const FragmentState& frag, const ShadeSt
   job.shade = &shade;
   job.in = &in;
   fast::make_plan(job);
-  return job.plan.kernel;
+  return job.plan;
+}
+
+/// The block kernel make_plan chooses for a triangle draw with this state.
+inline fast::BlockKernel planned_kernel(const FragmentState& frag, const ShadeState& shade) {
+  return planned(frag, shade).kernel;
 }
 
 struct Result {

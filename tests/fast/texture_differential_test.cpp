@@ -201,6 +201,7 @@ TexturedScene textured_scene(unsigned seed) {
       // The texel is the whole colour: RGBA, or a depth texture read as intensity.
       d.texture->format = d.texture->depth ? TextureFormat::kIntensity : TextureFormat::kRgba;
       unit.env = TextureEnvMode::kReplace;
+      if (pick(0, 2) == 0) d.frag.alpha_test = {true, CompareFunc(pick(0, 7)), real(0.0f, 1.0f)};
     } else {
       unit.env = TextureEnvMode(pick(0, 5));
       if (unit.env == TextureEnvMode::kCombine) unit.combine = random_combine(pick);
@@ -331,17 +332,23 @@ TEST(TextureDifferential, FloorThroughEveryLevelOnAnOddHeight) {
   }
 }
 
-// The kernel make_plan chooses for a textured draw: kTextured for one unit whose environment is
-// not GL_COMBINE, with or without the depth test, alpha test and blend (the scenes above draw
-// through it on every target); the general path with a second unit, GL_COMBINE, fog, the
-// stencil test or a logic op.
-TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
+// A complete 2 x 2 grey RGBA texture, linear without mipmaps.
+Texture grey_2x2() {
   Texture texture;
   TextureLevel level;
   level.width = level.height = 2;
   level.rgba.assign(16, 128);
   texture.levels.push_back(level);
   texture.min_filter = TextureFilter::kLinear;
+  return texture;
+}
+
+// The kernel make_plan chooses for a textured draw: kTextured for one unit whose environment is
+// not GL_COMBINE, with or without the depth test, alpha test and blend (the scenes above draw
+// through it on every target); the general path with a second unit, GL_COMBINE, fog, the
+// stencil test or a logic op.
+TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
+  Texture texture = grey_2x2();
   auto kernel = [&](auto&& change) {
     FragmentState frag;
     ShadeState shade;
@@ -365,6 +372,37 @@ TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.stencil.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.color_mask[1] = false; }), BlockKernel::kGeneral);
+}
+
+// The textured kernel writes the filtered bytes as the colours (DrawPlan::texel_bytes) for
+// GL_REPLACE of an RGBA texture the 8-bit sampler filters, without blending, alpha-tested or
+// not: the exact scenes above (GL_REPLACE of RGBA texels, compared bit for bit) and the floor
+// draw through it; not for another environment or format, a texture filtered in floats
+// (GL_CLAMP) or blending.
+TEST(TextureDifferential, TexelBytesOnlyForReplacingRgbaFilteredInBytes) {
+  Texture texture = grey_2x2();
+  auto bytes = [&](auto&& change) {
+    Texture t = texture;
+    FragmentState frag;
+    ShadeState shade;
+    shade.lighting = false;
+    shade.textures[0].texture = &t;
+    shade.textures[0].env = TextureEnvMode::kReplace;
+    change(frag, shade, t);
+    return test::planned(frag, shade).texel_bytes;
+  };
+  EXPECT_TRUE(bytes([](FragmentState&, ShadeState&, Texture&) {}));
+  EXPECT_TRUE(bytes([](FragmentState& f, ShadeState&, Texture& t) {
+    f.depth_test = false;
+    t.wrap_s = TextureWrap::kClampToEdge;
+    t.min_filter = TextureFilter::kNearest;
+  }));
+  EXPECT_FALSE(bytes([](FragmentState&, ShadeState& s, Texture&) { s.textures[0].env = TextureEnvMode::kModulate; }));
+  EXPECT_FALSE(bytes([](FragmentState&, ShadeState&, Texture& t) { t.format = TextureFormat::kRgb; }));
+  EXPECT_FALSE(bytes([](FragmentState&, ShadeState&, Texture& t) { t.wrap_t = TextureWrap::kClamp; }));
+  EXPECT_TRUE(bytes([](FragmentState& f, ShadeState&, Texture&) { f.alpha_test = {true, CompareFunc::kGreater, 0.5f}; }));
+  EXPECT_FALSE(bytes([](FragmentState& f, ShadeState&, Texture&) { f.blend.enabled = true; }));
+  EXPECT_FALSE(bytes([](FragmentState&, ShadeState& s, Texture&) { s.fog.enabled = true; }));
 }
 
 }  // namespace
