@@ -55,10 +55,8 @@ BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || f.alpha_one || p.scalar_fragments || p.phong) {
     return BlockKernel::kGeneral;
   }
+  if (f.stencil.enabled && !p.writes_color) return BlockKernel::kStencil;  // a mask drawn into the stencil buffer
   const bool every_channel = f.color_mask[0] && f.color_mask[1] && f.color_mask[2] && f.color_mask[3];
-  if (f.stencil.enabled && !every_channel && !p.writes_color) {
-    return BlockKernel::kStencil;  // a mask drawn into the stencil buffer
-  }
   if (!every_channel || (f.blend.enabled && !f.blend.source_over())) return BlockKernel::kGeneral;
   if (f.stencil.enabled) return BlockKernel::kStencil;
   if (!f.depth_test) return f.blend.enabled ? BlockKernel::kBlend : BlockKernel::kOpaque;  // 2D drawing
