@@ -397,6 +397,32 @@ HWY_INLINE hn::Vec<DUB> bytes_to_words(const Bytes8& v) {
 }
 #endif
 
+/// One image of a level (a 2D level, a 3D level's image, a cube map's face) filtered by the
+/// 8-bit sampler at taps (i0, i1) across and (j0, j1) down: a function, not a lambda, so that
+/// it is inlined (a lambda called twice is a call, its vectors spilled around it).
+HWY_INLINE Bytes8 bilinear_bytes(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> image, hn::Vec<DIB> i0,
+                                 hn::Vec<DIB> i1, hn::Vec<DIB> j0, hn::Vec<DIB> j1, Weight8 across, Weight8 down) {
+  const DIB di;
+  const hn::Mask<DIB> none = hn::FirstN(di, 0);
+  const auto width = hn::Set(di, l.width);
+  const auto base = hn::Mul(image, hn::Set(di, l.height));
+  hn::Vec<DUB> t00, t10, t01, t11;
+  texel_words(l, hn::Mul(hn::Add(base, j0), width), i0, none, i1, none, t00, t10);
+  const Bytes8 top = lerp8(unpack8(t00), unpack8(t10), across);
+  if (tp.one_d) return top;
+  texel_words(l, hn::Mul(hn::Add(base, j1), width), i0, none, i1, none, t01, t11);
+  return lerp8(top, lerp8(unpack8(t01), unpack8(t11), across), down);
+}
+
+/// sample_level's nearest index along an axis of `size` texels, wrapped as fetch wraps it (the
+/// 8-bit sampler's wrap modes never take the border).
+HWY_INLINE hn::Vec<DIB> nearest_index(VB c, int size, TextureWrap wrap) {
+  const DIB di;
+  hn::Mask<DIB> unused = hn::FirstN(di, 0);
+  const auto i = hn::ConvertTo(di, hn::Floor(texel_coord(c, size, wrap)));
+  return wrap_index(keeps_nearest_in_level(wrap) ? hn::Min(i, hn::Set(di, size - 1)) : i, size, wrap, unused);
+}
+
 /// One level's texels filtered by the 8-bit sampler (texture.cpp's sample_level where
 /// eight_bit_filtering holds): `linear` lanes by fixed_taps and lerp8 along s, t and r, the
 /// others the nearest texel (sample_level's index, wrapped by repeat or clamp to edge).
@@ -407,39 +433,29 @@ HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB 
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
   const auto face = tp.cube ? hn::ConvertTo(di, r) : hn::Zero(di);  // a cube map's r: the face
-  const hn::Mask<DIB> none = hn::FirstN(di, 0);
   Bytes8 nearest;
   if (!all_linear) {  // sample_level's nearest index, wrapped as fetch wraps it
-    hn::Mask<DIB> unused = none;
-    auto index = [&](VB c, int size, TextureWrap wrap) {
-      const auto i = hn::ConvertTo(di, hn::Floor(texel_coord(c, size, wrap)));
-      return wrap_index(keeps_nearest_in_level(wrap) ? hn::Min(i, hn::Set(di, size - 1)) : i, size, wrap, unused);
-    };
-    const auto i = index(s, l.width, tp.wrap_s);
-    auto row = tp.one_d ? hn::Zero(di) : index(t, l.height, tp.wrap_t);
-    if (tp.three_d) row = hn::Add(hn::Mul(index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
+    const auto i = nearest_index(s, l.width, tp.wrap_s);
+    auto row = tp.one_d ? hn::Zero(di) : nearest_index(t, l.height, tp.wrap_t);
+    if (tp.three_d) row = hn::Add(hn::Mul(nearest_index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
     else if (tp.cube) row = hn::Add(hn::Mul(face, hn::Set(di, l.height)), row);
     const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
     nearest = unpack8(hn::GatherIndex(du, words, hn::Add(hn::Mul(row, hn::Set(di, l.width)), i)));
     if (!any_linear) return nearest;
   }
-  hn::Vec<DIB> i0, i1, wi, j0 = hn::Zero(di), j1 = j0, wj = j0, k1 = face, wk = j0;
+  hn::Vec<DIB> i0, i1, wi, j0 = hn::Zero(di), j1 = j0, wj = j0;
   fixed_taps(s, l.width, tp.wrap_s, tp.pot_s, i0, i1, wi);
   if (!tp.one_d) fixed_taps(t, l.height, tp.wrap_t, tp.pot_t, j0, j1, wj);
   const Weight8 across = weight8(wi), down = weight8(wj);
-  const auto width = hn::Set(di, l.width), height = hn::Set(di, l.height);
-  auto slice = [&](hn::Vec<DIB> image) {
-    const auto base = hn::Mul(image, height);
-    hn::Vec<DUB> t00, t10, t01, t11;
-    texel_words(l, hn::Mul(hn::Add(base, j0), width), i0, none, i1, none, t00, t10);
-    const Bytes8 top = lerp8(unpack8(t00), unpack8(t10), across);
-    if (tp.one_d) return top;
-    texel_words(l, hn::Mul(hn::Add(base, j1), width), i0, none, i1, none, t01, t11);
-    return lerp8(top, lerp8(unpack8(t01), unpack8(t11), across), down);
-  };
-  hn::Vec<DIB> k0 = face;
-  if (tp.three_d) fixed_taps(r, l.depth, tp.wrap_r, tp.pot_r, k0, k1, wk);
-  const Bytes8 out = tp.three_d ? lerp8(slice(k0), slice(k1), weight8(wk)) : slice(k0);
+  Bytes8 out;
+  if (tp.three_d) {
+    hn::Vec<DIB> k0, k1, wk;
+    fixed_taps(r, l.depth, tp.wrap_r, tp.pot_r, k0, k1, wk);
+    out = lerp8(bilinear_bytes(tp, l, k0, i0, i1, j0, j1, across, down),
+                bilinear_bytes(tp, l, k1, i0, i1, j0, j1, across, down), weight8(wk));
+  } else {
+    out = bilinear_bytes(tp, l, face, i0, i1, j0, j1, across, down);
+  }
   return all_linear ? out : select8(hn::RebindMask(du, linear), out, nearest);
 }
 
