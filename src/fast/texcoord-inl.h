@@ -12,6 +12,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "fast/block-inl.h"
@@ -28,8 +29,52 @@ namespace hn = hwy::HWY_NAMESPACE;
 struct TexcoordPlanes {
   float base[4], d0[4], d1[4];
   bool unit_q;
-  bool with_r;  // a 3D texture: r is projected too
+  bool with_r;      // a 3D texture: r is projected too
+  bool magnified;   // every quad the triangle's blocks hold is magnified (magnified_everywhere)
 };
+
+/// Whether the level of detail is at most 0 at every 2x2 quad the triangle's blocks in the
+/// tile hold, for a texture whose plan computes one (TexturePlan::lod) without bias or limits:
+/// then every lane samples the base level with the magnification filter, as choose_levels
+/// would choose, and the block needs no derivatives. Decided for affine triangles with q 1
+/// (their coordinates planes in the screen weights, constant differences from pixel to pixel)
+/// of 1D and 2D textures: the planes' gradient, widened by what the float roundings of the
+/// lanes' coordinates can add to a difference, is below one base-level texel a pixel along x
+/// and along y, with a margin for the roundings of texture_rho2 itself.
+HWY_INLINE bool magnified_everywhere(const DrawJob& job, const TriSetup& t, const TexcoordPlanes& p, int unit) {
+  const TexturePlan& tp = job.plan.texture[unit];
+  if (!tp.lod || tp.adjust.adjusted || tp.cube || tp.three_d || p.with_r || !t.affine || !p.unit_q) return false;
+  // Screen weights f_k = edge_k * inv_area: their change one pixel right and one row up.
+  double fx[2], fy[2];
+  for (int k = 0; k < 2; ++k) {
+    fx[k] = double(-t.dy[k] * detail::kSubpixelOne) * t.inv_area;
+    fy[k] = double(t.dx[k] * detail::kSubpixelOne) * t.inv_area;
+  }
+  // The largest |base| + |f0 d0| + |f1 d1| of s and t over the pixels the blocks and the quads'
+  // corners reach (the box widened by a block and two pixels; the weights are linear, so at its
+  // corners): a lane's coordinate is within a few float roundings of that sum, 2^-22 of it,
+  // and a difference of two within 2^-21; the bound below allows 2^-19.
+  const int xs[2] = {t.x0 - 18, t.x1 + 18}, ys[2] = {t.y0 - 3, t.y1 + 3};
+  double largest = 0.0;
+  for (int x : xs) {
+    for (int y : ys) {
+      const double f0 = double(edge_at(t, 0, x, y)) * t.inv_area, f1 = double(edge_at(t, 1, x, y)) * t.inv_area;
+      for (int c = 0; c < 2; ++c) {
+        const double sum = std::fabs(p.base[c]) + std::fabs(f0 * p.d0[c]) + std::fabs(f1 * p.d1[c]);
+        largest = std::max(largest, sum);
+      }
+    }
+  }
+  const double slack = largest * 0x1p-19;
+  const double width = tp.width, height = tp.one_d ? 0.0 : tp.height;
+  auto below_one = [&](const double (&f)[2]) {
+    const double ds = std::fabs(p.d0[0] * f[0] + p.d1[0] * f[1]) + slack;
+    const double dt = std::fabs(p.d0[1] * f[0] + p.d1[1] * f[1]) + slack;
+    const double rho2 = ds * width * ds * width + dt * height * dt * height;
+    return rho2 <= 0.99;  // false for NaN
+  };
+  return below_one(fx) && below_one(fy);
+}
 
 HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t, int unit) {
   static constexpr int kSlot[4] = {0, 1, 3, 2};  // s, t, q, r
@@ -42,6 +87,7 @@ HWY_INLINE TexcoordPlanes texcoord_planes(const DrawJob& job, const TriSetup& t,
     p.base[i] = a2, p.d0[i] = a0 - a2, p.d1[i] = a1 - a2;
   }
   p.unit_q = p.base[2] == 1.0f && p.d0[2] == 0.0f && p.d1[2] == 0.0f;
+  p.magnified = magnified_everywhere(job, t, p, unit);
   return p;
 }
 

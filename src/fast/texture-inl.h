@@ -255,14 +255,13 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
     for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
     return;
   }
-  if (!tp.three_d) return bilinear_slice(tp, l, i, j, k, a, b, r, out);  // inlined (a lambda is a call)
-  auto slice = [&](hn::Vec<DIB> kk, VB res[4]) { bilinear_slice(tp, l, i, j, kk, a, b, r, res); };
+  if (!tp.three_d) return bilinear_slice(tp, l, i, j, k, a, b, r, out);
   const VB ww = hn::Sub(w, hn::Set(db, 0.5f)), fw = hn::Floor(ww);
   k = all_linear ? hn::ConvertTo(di, fw) : hn::IfThenElse(li, hn::ConvertTo(di, fw), k);
   const VB cw = hn::IfThenElseZero(linear, hn::Sub(ww, fw));
   VB near[4], far[4];
-  slice(k, near);
-  slice(hn::Add(k, one), far);
+  bilinear_slice(tp, l, i, j, k, a, b, r, near);
+  bilinear_slice(tp, l, i, j, hn::Add(k, one), a, b, r, far);
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) out[c] = lerp(near[c], far[c], cw);
 }
@@ -519,7 +518,7 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
 /// A block's texture coordinates (s, t, r) as the samplers take them.
 struct BlockCoords {
   VB s, t, r;
-  QuadDerivatives d;  // where the texture needs a level of detail (TexturePlan::lod)
+  QuadDerivatives d;  // where the texture needs a level of detail (TexturePlan::lod), unless magnified
 };
 
 /// The block's coordinates on texture unit `unit` (on a cube map's face), as sample_block
@@ -531,7 +530,7 @@ HWY_INLINE BlockCoords block_coords(const DrawJob& job, int unit, const TriSetup
   BlockCoords c;
   c.r = hn::Zero(db);
   project(db, planes, w.f0, w.f1, c.s, c.t, c.r);
-  if (tp.lod) {
+  if (tp.lod && !planes.magnified) {
     c.d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(c.s, c.t, c.r, planes.with_r)
                                                 : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
@@ -546,7 +545,7 @@ HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, co
                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB texel[4]) {
   const TexturePlan& tp = job.plan.texture[unit];
   const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  sample_texture(tp, c.s, c.t, c.r, tp.lod ? &c.d : nullptr, live, texel);
+  sample_texture(tp, c.s, c.t, c.r, tp.lod && !planes.magnified ? &c.d : nullptr, live, texel);
 }
 
 /// sample_block's texels as RGBA8 words, for a texture the 8-bit sampler filters
@@ -555,7 +554,7 @@ HWY_INLINE hn::Vec<DUB> sample_block_words(const DrawJob& job, int unit, const T
                                            const Weights& w, int x, int y, const VD e[kRows][3], MB live) {
   const TexturePlan& tp = job.plan.texture[unit];
   const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, tp.lod ? &c.d : nullptr, live));
+  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, tp.lod && !planes.magnified ? &c.d : nullptr, live));
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE
