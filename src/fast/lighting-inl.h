@@ -92,14 +92,6 @@ HWY_INLINE V3<D> normalize_or(D d, const V3<D>& v, const V3<D>& fallback, hn::Ve
           hn::IfThenElse(ok, hn::Div(v.z, len), fallback.z)};
 }
 
-// c^e for c > 0 (other lanes are garbage and must be masked by the caller). A whole exponent
-// from 1 to 128 (shininess and spot exponents usually are) by binary powering: at most 7
-// squarings and 7 products, each rounding once, so within about 2e-5 relative of the exact
-// power (std::pow), against some 45 operations for exp(e log c), which is there for the
-// others. The squarings are unrolled from the exponent's top bit down: each bit's test is a
-// branch of its own, taken the same way for a whole draw (in a loop, one branch taking the
-// exponent's bits in turn was mispredicted often enough to cost a tenth of per-pixel
-// lighting's time).
 // One step of pow_positive's binary powering: the power squared, times c where the bit is
 // set. A function, not a lambda: a lambda called seven times is a call, its vectors kept in
 // memory.
@@ -109,6 +101,14 @@ HWY_INLINE V power_step(V power, V c, bool times_c) {
   return times_c ? hn::Mul(power, c) : power;
 }
 
+// c^e for c > 0 (other lanes are garbage and must be masked by the caller). A whole exponent
+// from 1 to 128 (shininess and spot exponents usually are) by binary powering: at most 7
+// squarings and 7 products, each rounding once, so within about 2e-5 relative of the exact
+// power (std::pow), against some 45 operations for exp(e log c), which is there for the
+// others. The squarings are unrolled from the exponent's top bit down: each bit's test is a
+// branch of its own, taken the same way for a whole draw (in a loop, one branch taking the
+// exponent's bits in turn was mispredicted often enough to cost a tenth of per-pixel
+// lighting's time).
 template <class D>
 HWY_INLINE hn::Vec<D> pow_positive(D d, hn::Vec<D> c, float e) {
   if (e >= 1.0f && e <= 128.0f && e == float(int(e))) {

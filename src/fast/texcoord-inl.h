@@ -37,7 +37,7 @@ struct TexcoordPlanes {
 /// tile hold, for a texture whose plan computes one (TexturePlan::lod) without bias or limits:
 /// then every lane samples the base level with the magnification filter, as choose_levels
 /// would choose, and the block needs no derivatives. Decided for affine triangles with q 1
-/// (their coordinates planes in the screen weights, constant differences from pixel to pixel)
+/// (their coordinate planes in the screen weights, constant differences from pixel to pixel)
 /// of 1D and 2D textures: the planes' gradient, widened by what the float roundings of the
 /// lanes' coordinates can add to a difference, is below one base-level texel a pixel along x
 /// and along y, with a margin for the roundings of texture_rho2 itself.

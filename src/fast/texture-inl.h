@@ -518,7 +518,8 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
 /// A block's texture coordinates (s, t, r) as the samplers take them.
 struct BlockCoords {
   VB s, t, r;
-  QuadDerivatives d;  // where the texture needs a level of detail (TexturePlan::lod), unless magnified
+  QuadDerivatives d;  // where the texture needs a level of detail: `lod`
+  bool lod;           // TexturePlan::lod, unless the triangle is magnified everywhere
 };
 
 /// The block's coordinates on texture unit `unit` (on a cube map's face), as sample_block
@@ -530,7 +531,8 @@ HWY_INLINE BlockCoords block_coords(const DrawJob& job, int unit, const TriSetup
   BlockCoords c;
   c.r = hn::Zero(db);
   project(db, planes, w.f0, w.f1, c.s, c.t, c.r);
-  if (tp.lod && !planes.magnified) {
+  c.lod = tp.lod && !planes.magnified;
+  if (c.lod) {
     c.d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(c.s, c.t, c.r, planes.with_r)
                                                 : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
@@ -545,7 +547,7 @@ HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, co
                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB texel[4]) {
   const TexturePlan& tp = job.plan.texture[unit];
   const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  sample_texture(tp, c.s, c.t, c.r, tp.lod && !planes.magnified ? &c.d : nullptr, live, texel);
+  sample_texture(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live, texel);
 }
 
 /// sample_block's texels as RGBA8 words, for a texture the 8-bit sampler filters
@@ -554,7 +556,7 @@ HWY_INLINE hn::Vec<DUB> sample_block_words(const DrawJob& job, int unit, const T
                                            const Weights& w, int x, int y, const VD e[kRows][3], MB live) {
   const TexturePlan& tp = job.plan.texture[unit];
   const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, tp.lod && !planes.magnified ? &c.d : nullptr, live));
+  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live));
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE
