@@ -356,7 +356,6 @@ TEST(TextureDifferential, MagnifiedTrianglesSampleTheBaseLevel) {
     for (int scene = 0; scene < 24; ++scene) {
       const int width = 160, height = scene % 2 ? 129 : 128;
       std::vector<test::RandomDraw> draws;
-      std::vector<std::shared_ptr<Texture>> textures;
       for (int k = 0; k < 4; ++k) {
         test::RandomDraw d;
         auto t = std::make_shared<Texture>(*texture);
@@ -384,7 +383,6 @@ TEST(TextureDifferential, MagnifiedTrianglesSampleTheBaseLevel) {
         d.shade.textures[0].texture = t.get();
         d.shade.textures[0].env = TextureEnvMode::kReplace;
         d.frag.depth_test = false;
-        textures.push_back(t);
         draws.push_back(std::move(d));
       }
       Framebuffer initial;
