@@ -186,10 +186,21 @@ struct ClippedTriangle {
   bool polygon = true;  ///< a polygon's: the polygon stipple applies (not a line's or a point's)
 };
 
+/// A point drawn as the box of pixels it covers (PrimAssembler::point_pixels): no edges, one
+/// bin entry, and its fragments' values the vertex's own (`vertex`, a main vertex index; its
+/// varyings copied into SetupChunk::box_varyings). `at` holds its window depth and 1/w; `box`
+/// is cut to the draw's pixel box.
+struct PointBox {
+  RasterVertex at;
+  detail::PixelBox box;
+  std::uint32_t vertex;
+};
+
 /// Bin entries: a triangle index with these flags.
 inline constexpr std::uint32_t kBinClipped = 1u << 31;  ///< index into ClippedTriangle list
 inline constexpr std::uint32_t kBinFront = 1u << 30;
-inline constexpr std::uint32_t kBinIndexMask = kBinFront - 1;
+inline constexpr std::uint32_t kBinBox = 1u << 29;  ///< index into PointBox list
+inline constexpr std::uint32_t kBinIndexMask = kBinBox - 1;
 
 /// One contiguous range of triangles set up together: its bins keep submission order.
 struct SetupChunk {
@@ -198,6 +209,8 @@ struct SetupChunk {
   std::vector<float> clip_varyings;
   std::vector<ClippedTriangle> clipped;
   std::vector<detail::Coverage> coverage;
+  std::vector<PointBox> boxes;
+  std::vector<float> box_varyings;  ///< box i's at i times the layout's count
   std::vector<detail::ClipVertex> poly, scratch;
   RenderStats stats;
 };

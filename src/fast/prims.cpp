@@ -1,8 +1,12 @@
 // Lines, points and unfilled polygons on the fast pipeline: each vertex's clip coordinates
 // (the reference's projection) and its varyings expanded into the reference's attributes, the
 // reference's primitive assembly, and each piece it makes stored in the setup chunk as clipped
-// triangles are (window vertices, compact varyings) and binned.
+// triangles are (window vertices, compact varyings) and binned; aliased points, whose
+// fragments all take the point's values, stored as boxes of pixels (PointBox) instead.
 #include "fast/prims.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 #include "fast/setup.hpp"
 
@@ -70,6 +74,44 @@ PrimVertex prim_vertex(const DrawJob& job, const PrimAssembler& assembler, std::
   return v;
 }
 
+// Whether a vertex's varyings are all finite: a point drawn as a box takes them as they are,
+// where the piece's triangle weighs them (0 times an infinity is not a number).
+bool finite_varyings(const DrawJob& job, std::uint32_t i) {
+  const std::size_t stride = std::size_t(job.plan.layout.count);
+  const float* v = &job.varyings[std::size_t(i) * stride];
+  bool finite = true;
+  for (std::size_t k = 0; k < stride; ++k) finite = finite && std::isfinite(v[k]);
+  return finite;
+}
+
+// Point i of a draw with plain points as a box (PointBox), its pixels cut to the draw's pixel
+// box, binned into the tiles it covers.
+void box_point(const DrawJob& job, PrimAssembler& assembler, SetupChunk& chunk, std::uint32_t i) {
+  const PrimVertex v = assembler.make_vertex(job.projection * job.in->positions[i], job.in->positions[i].z);
+  detail::PixelBox b;
+  if (!assembler.point_pixels(v, b)) return;
+  const DrawPlan& p = job.plan;
+  b.x0 = std::max(b.x0, p.box_x0), b.x1 = std::min(b.x1, p.box_x1);
+  b.y0 = std::max(b.y0, p.box_y0), b.y1 = std::min(b.y1, p.box_y1);
+  if (b.x0 > b.x1 || b.y0 > b.y1) return;
+  PointBox box;
+  box.at = {double(v.win.x), double(v.win.y), 0, 0, v.z, v.inv_w};
+  box.box = b;
+  box.vertex = i;
+  const std::uint32_t entry = std::uint32_t(chunk.boxes.size()) | kBinBox;
+  chunk.boxes.push_back(box);
+  // Its varyings beside the others' (box_varyings): a tile reads its boxes' in the order it
+  // reads the boxes, without first reading which vertex each is.
+  const std::size_t stride = std::size_t(job.plan.layout.count);
+  const float* var = &job.varyings[std::size_t(i) * stride];
+  chunk.box_varyings.insert(chunk.box_varyings.end(), var, var + stride);
+  for (int ty = b.y0 >> kTileShift; ty <= b.y1 >> kTileShift; ++ty) {
+    for (int tx = b.x0 >> kTileShift; tx <= b.x1 >> kTileShift; ++tx) {
+      chunk.bins[std::size_t(ty) * std::size_t(job.tiles_x) + std::size_t(tx)].push_back(entry);
+    }
+  }
+}
+
 }  // namespace
 
 std::size_t setup_items(const VertexInput& in) { return in.triangles.size() + in.lines.size() + in.points.size(); }
@@ -89,6 +131,9 @@ void setup_prims(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
   PrimAssembler assembler(*job.frag, job.viewport, job.projection, job.fb_height, job.plan.flat, stipple);
   assembler.interpolate_only(attribute_slots(job.plan.layout));  // compact_varyings reads no other
   ChunkSink sink(job, chunk);
+  // Plain points as boxes, on the SIMD path (the reference's per-fragment path weighs the
+  // piece's corners).
+  const bool boxes = assembler.plain_points() && !job.plan.scalar_fragments && !job.plan.coverage;
   for (std::size_t item = begin; item < end; ++item) {
     if (item < triangles) {
       ++chunk.stats.triangles_in;
@@ -106,7 +151,9 @@ void setup_prims(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
       assembler.line(prim_vertex(job, assembler, s.v[0]), prim_vertex(job, assembler, s.v[1]), s.flags, s.v[1], sink);
     } else {
       const std::uint32_t i = in.points[item - triangles - lines];
-      if (i < n) assembler.point(prim_vertex(job, assembler, i), i, sink);
+      if (i >= n) continue;
+      if (boxes && finite_varyings(job, i)) box_point(job, assembler, chunk, i);
+      else assembler.point(prim_vertex(job, assembler, i), i, sink);
     }
   }
   stipple = assembler.stipple_counter();

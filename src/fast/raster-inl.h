@@ -304,6 +304,21 @@ HWY_INLINE unsigned kept_lanes(const DrawJob& job, const TriSetup& t, int x, int
   return kept;
 }
 
+// The lanes of the block at (x, y) inside a point's box (TriSetup::box): [t.x0, t.x1] by
+// [t.y0, t.y1].
+HWY_INLINE unsigned box_lanes(const TriSetup& t, int x, int y, int lanes) {
+  const unsigned all = (1u << lanes) - 1u;
+  unsigned columns = all;
+  if (x < t.x0) columns &= ~((1u << std::min(t.x0 - x, lanes)) - 1u);
+  if (x + lanes - 1 > t.x1) columns &= (1u << std::clamp(t.x1 - x + 1, 0, lanes)) - 1u;
+  unsigned kept = 0;
+  #pragma GCC unroll 4
+  for (int r = 0; r < kRows; ++r) {
+    if (y + r >= t.y0 && y + r <= t.y1) kept |= columns << (r * lanes);
+  }
+  return kept;
+}
+
 // The kernels' colours for the lanes `passed` of a block whose colour rows are `color`: the
 // triangle's one packed colour, the byte planes' (kBlend false: opaque) or source alpha over
 // the framebuffer's (kBlend true).
@@ -488,13 +503,13 @@ inline void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws,
 }
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
-// for the block whose top-left pixel is (x, y); e[r] are row r's edge values; `bound` the
-// block's depth bound for the depth-testing and textured kernels to keep (block_bounds), or
-// null.
+// for the block whose top-left pixel is (x, y); e[r] are row r's edge values; `box`: t is a
+// point's box (TriSetup::box), whose lanes box_lanes keeps; `bound` the block's depth bound
+// for the depth-testing and textured kernels to keep (block_bounds), or null.
 template <Path kPath, BlockKernel kKernel, bool kCoverage>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
-                      GroupCounts& counts, int x, int y, bool interior, const VD e[kRows][3], const VD thr[3],
-                      [[maybe_unused]] float* bound) {
+                      GroupCounts& counts, int x, int y, bool interior, bool box, const VD e[kRows][3],
+                      const VD thr[3], [[maybe_unused]] float* bound) {
   const DD dd;
   const DF df;
   const int lanes = int(hn::Lanes(dd));
@@ -504,6 +519,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     auto cov = hn::And(hn::And(hn::Ge(e[r][0], thr[0]), hn::Ge(e[r][1], thr[1])), hn::Ge(e[r][2], thr[2]));
     bits |= bits_of_mask(dd, cov) << (r * lanes);
   }
+  if (box) bits &= box_lanes(t, x, y, lanes);  // a point's box (t.box), whose edges cover every lane
   if (!bits) return;
   if constexpr (kKernel == BlockKernel::kGeneral) {  // the kernels never mask lanes
     if (job.plan.lane_masks) {
@@ -638,6 +654,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   float* const bounds =
       bounded && box_pixels(t) >= kBoundedBlocksArea ? block_bounds(job, t, ws, reject) : nullptr;
   const int blocks_per_row = kTileSize / lanes;
+  const bool box = t.box;  // read once: the blocks' stores may alias t for the compiler
   std::int64_t row_start[3], row_step[3];  // exact edge values at (gx0, y); one row down
   VD group_step[3];
   #pragma GCC unroll 4
@@ -677,7 +694,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
       float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
       // Not `*bound > reject`: a bound or a depth that is not a number hides nothing.
       if (!bound || !(*bound <= reject)) {
-        block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, e, thr, bound);
+        block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, box, e, thr, bound);
       }
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {

@@ -168,6 +168,8 @@ void reset_chunk(SetupChunk& chunk, std::size_t tiles) {
   chunk.clip_varyings.clear();
   chunk.clipped.clear();
   chunk.coverage.clear();
+  chunk.boxes.clear();
+  chunk.box_varyings.clear();
   chunk.stats = RenderStats{};
 }
 

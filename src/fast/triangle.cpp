@@ -63,6 +63,37 @@ bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t) {
   return t.x0 <= t.x1 && t.y0 <= t.y1;
 }
 
+// A point's box as a TriSetup whose three vertices are the point: weights zero, the depth
+// plane and every varying's plane flat at the point's values (what the piece's triangle
+// gives each of its fragments: a + 0 (a - a) + 0 (a - a)).
+bool setup_box(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty, TriSetup& t) {
+  const SetupChunk& ch = job.chunks[std::size_t(chunk)];
+  const std::uint32_t index = entry & kBinIndexMask;
+  const PointBox& b = ch.boxes[index];
+  t.x0 = std::max(tx, b.box.x0), t.x1 = std::min(tx + kTileSize - 1, b.box.x1);
+  t.y0 = std::max(ty, b.box.y0), t.y1 = std::min(ty + kTileSize - 1, b.box.y1);
+  if (t.x0 > t.x1 || t.y0 > t.y1) return false;
+  const float* var = &ch.box_varyings[std::size_t(index) * std::size_t(job.plan.layout.count)];
+  #pragma GCC unroll 3
+  for (int k = 0; k < 3; ++k) {
+    t.v[k] = &b.at, t.var[k] = var;
+    t.dx[k] = t.dy[k] = t.ox[k] = t.oy[k] = 0;
+    t.threshold[k] = 0.0;
+  }
+  t.flat = var;  // the colours' planes flat at the point's (set_up's a2, a0 - a2, a1 - a2 are a, 0, 0)
+  t.front = true;
+  t.area = 1;
+  t.inv_area = 1.0;
+  t.affine = true;
+  t.depth = detail::depth_plane(b.at.z, b.at.z, b.at.z);
+  t.offset = 0.0f;
+  t.coverage = nullptr;
+  t.polygon = false;
+  t.provoking_index = b.vertex;
+  t.box = true;
+  return true;
+}
+
 }  // namespace
 
 bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
@@ -70,6 +101,8 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   const RasterVertex* v[3];
   const float* var[3];
   bool offset;
+  if (entry & kBinBox) return setup_box(job, chunk, entry, tx, ty, t);
+  t.box = false;
   resolve(job, chunk, entry, v, var, t, offset);
   const RasterVertex &a = *v[0], &b = *v[1], &c = *v[2];
   std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
@@ -105,6 +138,13 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
 void prefetch_setup(const DrawJob& job, int chunk, std::uint32_t entry, bool vertices) {
   const std::size_t stride = std::size_t(job.plan.layout.count);
   const std::uint32_t index = entry & kBinIndexMask;
+  if (entry & kBinBox) {  // the record and its varyings, with no load to wait for
+    const SetupChunk& ch = job.chunks[std::size_t(chunk)];
+    if (vertices) return;
+    __builtin_prefetch(&ch.boxes[index]);
+    if (stride) __builtin_prefetch(&ch.box_varyings[index * stride]);
+    return;
+  }
   if (entry & kBinClipped) {
     const SetupChunk& ch = job.chunks[std::size_t(chunk)];
     if (!vertices) return __builtin_prefetch(&ch.clipped[index]);

@@ -26,14 +26,18 @@ struct TriSetup {
   const detail::Coverage* coverage;  ///< a smooth line's or point's, else null
   bool polygon;  ///< a polygon's (the polygon stipple applies), not a line's or a point's
   int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
+  /// A point's box (PointBox): its pixels are the box's, its three vertices the point itself
+  /// (zero edges, all covering, and zero slopes: each fragment takes the point's values).
+  bool box;
   std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
 };
 
 /// The pixels of the triangle's box in the tile.
 inline int box_pixels(const TriSetup& t) { return (t.x1 - t.x0 + 1) * (t.y1 - t.y0 + 1); }
 
-/// Prepares bin entry `entry` of setup chunk `chunk` for the tile with pixel origin (tx, ty).
-/// Returns false when the triangle has no pixels in the tile (or zero snapped area).
+/// Prepares bin entry `entry` of setup chunk `chunk` for the tile with pixel origin (tx, ty):
+/// a triangle, or a point's box (kBinBox). Returns false when it has no pixels in the tile
+/// (or zero snapped area).
 bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int ty,
                     TriSetup& t);
 

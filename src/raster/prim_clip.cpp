@@ -42,16 +42,26 @@ ClipSpace::ClipSpace(const ClipPlanes& user, const glm::mat4& projection) {
   count = kViewPlanes + user_count + 1;
 }
 
-float ClipSpace::distance(const glm::vec4& c, int i) const {
-  if (i == count - 1) return c.w - kMinW;
-  const glm::vec4& p = plane[std::size_t(i)];
+namespace {
+
+// Distance from plane p in float, Mesa's order of operations.
+[[gnu::always_inline]] inline float plane_distance(const glm::vec4& c, const glm::vec4& p) {
   return c.x * p.x + c.y * p.y + c.z * p.z + c.w * p.w;
 }
 
+}  // namespace
+
+float ClipSpace::distance(const glm::vec4& c, int i) const {
+  if (i == count - 1) return c.w - kMinW;
+  return plane_distance(c, plane[std::size_t(i)]);
+}
+
 std::uint32_t ClipSpace::outcode(const glm::vec4& c) const {
-  std::uint32_t code = 0;
-  for (int i = 0; i < count; ++i) {
-    if (!(distance(c, i) >= 0.0f)) code |= 1u << i;  // NaN is outside
+  // Every vertex of every line and point comes here: the planes without a call each.
+  const int guard = count - 1;
+  std::uint32_t code = !(c.w - kMinW >= 0.0f) ? 1u << guard : 0u;  // NaN is outside
+  for (int i = 0; i < guard; ++i) {
+    if (!(plane_distance(c, plane[std::size_t(i)]) >= 0.0f)) code |= 1u << i;
   }
   return code;
 }

@@ -159,6 +159,23 @@ void PrimAssembler::point(const PrimVertex& p, std::uint32_t provoking, PieceSin
   point_piece(p, true, provoking, sink);
 }
 
+bool PrimAssembler::plain_points() const {
+  const PointState& ps = frag_.point;
+  return !frag_.observer && !ps.sprite && !ps.smooth && !ps.multisample;
+}
+
+bool PrimAssembler::point_pixels(const PrimVertex& p, PixelBox& box) {
+  if (outcode(p) != 0) return false;
+  if (frag_.line.stipple) stipple_counter_ = 0;  // as point_piece
+  RasterQuad q;
+  if (!point_quad(p.win, clamp_size(p.point_size), fb_height_, q)) return false;
+  // The square's sides lie on pixel boundaries: the pixels from its left and bottom sides up
+  // to those before its right and top ones.
+  box.x0 = int(q.corner[0].x / kSubpixelOne), box.y0 = int(q.corner[0].y / kSubpixelOne);
+  box.x1 = int(q.corner[2].x / kSubpixelOne) - 1, box.y1 = int(q.corner[2].y / kSubpixelOne) - 1;
+  return true;
+}
+
 void PrimAssembler::segment(const PrimVertex& a, const PrimVertex& b, bool front, std::uint32_t provoking,
                             PieceSink& sink) {
   if (PrimitiveObserver* o = frag_.observer) return o->line(observed(a, front, fb_height_), observed(b, front, fb_height_));

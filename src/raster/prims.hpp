@@ -37,6 +37,11 @@ float derived_point_size(const PointState& p, float eye_z);
 /// The alpha factor at GL window position (x, y) (a pixel centre); negative: discarded.
 float coverage_at(const Coverage& c, double x, double y);
 
+/// Pixels x0..x1 by y0..y1 (inclusive).
+struct PixelBox {
+  int x0, y0, x1, y1;
+};
+
 /// A corner of a piece: GL window position (y up), depth, 1/w and attributes.
 struct PieceCorner {
   double x, y;
@@ -84,6 +89,16 @@ class PrimAssembler {
   /// b, whose colours are the flat ones.
   void line(PrimVertex a, PrimVertex b, std::uint32_t flags, std::uint32_t provoking, PieceSink& sink);
   void point(const PrimVertex& p, std::uint32_t provoking, PieceSink& sink);
+  /// Whether this draw's points are aliased squares whose fragments all take the point's own
+  /// values (no sprite, smoothing or multisampling, no observer): point_pixels can say which
+  /// pixels each covers.
+  bool plain_points() const;
+  /// A point of a draw with plain_points(), as point() would draw it without its attributes:
+  /// false when it is clipped away or covers nothing, else the pixels of its square (GL
+  /// window coordinates, y up, inclusive; not cut to the framebuffer). Its fragments take the
+  /// vertex's depth and attributes (flat shading's too: the point is its own provoking
+  /// vertex): the values point()'s piece gives every pixel centre it covers.
+  bool point_pixels(const PrimVertex& p, PixelBox& box);
   /// A triangle of a draw with some face in GL_LINE or GL_POINT mode (every triangle of such a
   /// draw comes here, filled ones too): `flags` are its TriangleFlag bits.
   void triangle(const PrimVertex (&v)[3], std::uint8_t flags, std::uint32_t provoking, PieceSink& sink);
