@@ -188,11 +188,11 @@ struct ClippedTriangle {
 
 /// A point drawn as the box of pixels it covers (PrimAssembler::point_pixels): no edges, one
 /// bin entry, and its fragments' values the vertex's own (`vertex`, a main vertex index; its
-/// varyings copied into SetupChunk::box_varyings). `at` holds its window depth and 1/w; `box`
-/// is cut to the draw's pixel box.
-struct PointBox {
-  RasterVertex at;
+/// varyings copied into SetupChunk::box_varyings): window depth `z`, `inv_w`. `box` is cut to
+/// the draw's pixel box. Two to a cache line, none across two.
+struct alignas(32) PointBox {
   detail::PixelBox box;
+  float z, inv_w;
   std::uint32_t vertex;
 };
 

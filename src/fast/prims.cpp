@@ -87,17 +87,15 @@ bool finite_varyings(const DrawJob& job, std::uint32_t i) {
 // Point i of a draw with plain points as a box (PointBox), its pixels cut to the draw's pixel
 // box, binned into the tiles it covers.
 void box_point(const DrawJob& job, PrimAssembler& assembler, SetupChunk& chunk, std::uint32_t i) {
-  const PrimVertex v = assembler.make_vertex(job.projection * job.in->positions[i], job.in->positions[i].z);
-  detail::PixelBox b;
-  if (!assembler.point_pixels(v, b)) return;
+  const glm::vec4& position = job.in->positions[i];
+  detail::PointPixels px;
+  if (!assembler.point_pixels(job.projection * position, position.z, px)) return;
   const DrawPlan& p = job.plan;
+  detail::PixelBox& b = px.box;
   b.x0 = std::max(b.x0, p.box_x0), b.x1 = std::min(b.x1, p.box_x1);
   b.y0 = std::max(b.y0, p.box_y0), b.y1 = std::min(b.y1, p.box_y1);
   if (b.x0 > b.x1 || b.y0 > b.y1) return;
-  PointBox box;
-  box.at = {double(v.win.x), double(v.win.y), 0, 0, v.z, v.inv_w};
-  box.box = b;
-  box.vertex = i;
+  const PointBox box{b, px.z, px.inv_w, i};
   const std::uint32_t entry = std::uint32_t(chunk.boxes.size()) | kBinBox;
   chunk.boxes.push_back(box);
   // Its varyings beside the others' (box_varyings): a tile reads its boxes' in the order it

@@ -74,9 +74,10 @@ bool setup_box(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int t
   t.y0 = std::max(ty, b.box.y0), t.y1 = std::min(ty + kTileSize - 1, b.box.y1);
   if (t.x0 > t.x1 || t.y0 > t.y1) return false;
   const float* var = &ch.box_varyings[std::size_t(index) * std::size_t(job.plan.layout.count)];
+  t.box_at = {0.0, 0.0, 0, 0, b.z, b.inv_w};
   #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
-    t.v[k] = &b.at, t.var[k] = var;
+    t.v[k] = &t.box_at, t.var[k] = var;
     t.dx[k] = t.dy[k] = t.ox[k] = t.oy[k] = 0;
     t.threshold[k] = 0.0;
   }
@@ -85,7 +86,7 @@ bool setup_box(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int t
   t.area = 1;
   t.inv_area = 1.0;
   t.affine = true;
-  t.depth = detail::depth_plane(b.at.z, b.at.z, b.at.z);
+  t.depth = detail::depth_plane(b.z, b.z, b.z);
   t.offset = 0.0f;
   t.coverage = nullptr;
   t.polygon = false;

@@ -29,6 +29,7 @@ struct TriSetup {
   /// A point's box (PointBox): its pixels are the box's, its three vertices the point itself
   /// (zero edges, all covering, and zero slopes: each fragment takes the point's values).
   bool box;
+  RasterVertex box_at;  ///< a box's depth and 1/w, where its v[k] point
   std::uint32_t provoking_index;  ///< main-vertex index of the provoking vertex
 };
 

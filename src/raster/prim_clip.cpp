@@ -66,25 +66,26 @@ std::uint32_t ClipSpace::outcode(const glm::vec4& c) const {
   return code;
 }
 
+DownTransform::DownTransform(const Viewport& vp, int fb_height)
+    : half_width(0.5f * float(vp.width)),
+      half_height(0.5f * float(vp.height)),
+      tx(half_width + float(vp.x)),
+      ty(float(fb_height) - (half_height + float(vp.y))),
+      sz(float(0.5 * (double(vp.far_depth) - double(vp.near_depth)))),
+      tz(float(0.5 * (double(vp.near_depth) + double(vp.far_depth)))) {}
+
+DownVertex to_down_window(const glm::vec4& clip, const DownTransform& t, bool fused) {
+  const float inv_w = 1.0f / clip.w;
+  const float x = clip.x * inv_w, y = clip.y * inv_w, z = clip.z * inv_w;
+  if (fused) return {{std::fma(x, t.half_width, t.tx), std::fma(y, -t.half_height, t.ty)}, std::fma(z, t.sz, t.tz), inv_w};
+  return {{x * t.half_width + t.tx, y * -t.half_height + t.ty}, z * t.sz + t.tz, inv_w};
+}
+
 void to_down_window(PrimVertex& v, const Viewport& vp, int fb_height, bool fused) {
-  // Mesa's viewport state: scale (w/2, -h/2, (f - n)/2), translate (x + w/2, H - (y + h/2),
-  // (n + f)/2) for a buffer whose rows run top to bottom.
-  const float half_width = 0.5f * float(vp.width), half_height = 0.5f * float(vp.height);
-  const float tx = half_width + float(vp.x), ty = float(fb_height) - (half_height + float(vp.y));
-  const float sz = float(0.5 * (double(vp.far_depth) - double(vp.near_depth)));
-  const float tz = float(0.5 * (double(vp.near_depth) + double(vp.far_depth)));
-  const float inv_w = 1.0f / v.clip.w;
-  const float x = v.clip.x * inv_w, y = v.clip.y * inv_w, z = v.clip.z * inv_w;
-  if (fused) {
-    v.win.x = std::fma(x, half_width, tx);
-    v.win.y = std::fma(y, -half_height, ty);
-    v.z = std::fma(z, sz, tz);
-  } else {
-    v.win.x = x * half_width + tx;
-    v.win.y = y * -half_height + ty;
-    v.z = z * sz + tz;
-  }
-  v.inv_w = inv_w;
+  const DownVertex d = to_down_window(v.clip, DownTransform(vp, fb_height), fused);
+  v.win = d.win;
+  v.z = d.z;
+  v.inv_w = d.inv_w;
 }
 
 bool clip_segment(const ClipSpace& planes, std::uint32_t oa, std::uint32_t ob, PrimVertex& a, PrimVertex& b,

@@ -44,10 +44,26 @@ struct ClipSpace {
   bool user_plane(int i) const { return i >= kViewPlanes && i < kViewPlanes + user_count; }
 };
 
+/// llvmpipe's viewport transform for one viewport and framebuffer height, Mesa's viewport
+/// state: scale (w/2, -h/2, (f - n)/2), translate (x + w/2, H - (y + h/2), (n + f)/2) for a
+/// buffer whose rows run top to bottom.
+struct DownTransform {
+  DownTransform(const Viewport& vp, int fb_height);
+  float half_width, half_height, tx, ty, sz, tz;
+};
+
+/// A clip position's window position (down), window depth and 1/w.
+struct DownVertex {
+  DownPoint win;
+  float z, inv_w;
+};
+
 /// llvmpipe's viewport transform: window x and y (down) and depth from clip coordinates,
 /// (c / w) * scale + translate per coordinate. `fused`: in one rounding (a fused multiply-add),
 /// as Mesa's compiled vertex stage computes it for the vertices a draw is given; the ends
 /// clipping makes are computed in two (Mesa's clipper is C code).
+DownVertex to_down_window(const glm::vec4& clip, const DownTransform& t, bool fused = true);
+/// The same for v.clip, into v.win, v.z and v.inv_w.
 void to_down_window(PrimVertex& v, const Viewport& vp, int fb_height, bool fused = true);
 
 /// Clips the segment a-b; false when nothing is left. Ends that move are interpolated in clip

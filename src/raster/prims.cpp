@@ -117,7 +117,7 @@ float coverage_at(const Coverage& c, double x, double y) {
 
 PrimAssembler::PrimAssembler(const FragmentState& fragment, const Viewport& viewport, const glm::mat4& projection,
                              int fb_height, bool flat, std::uint32_t stipple_counter)
-    : frag_(fragment), viewport_(viewport), fb_height_(fb_height), flat_(flat),
+    : frag_(fragment), viewport_(viewport), window_(viewport, fb_height), fb_height_(fb_height), flat_(flat),
       planes_(fragment.clip, projection), stipple_counter_(stipple_counter) {}
 
 float derived_point_size(const PointState& p, float eye_z) {
@@ -132,7 +132,10 @@ PrimVertex PrimAssembler::make_vertex(const glm::vec4& clip, float eye_z) const 
   v.clip = clip;
   v.edge = true;
   v.point_size = frag_.point.attenuated() ? derived_point_size(frag_.point, eye_z) : frag_.point.size;
-  to_down_window(v, viewport_, fb_height_);
+  const DownVertex d = to_down_window(clip, window_);
+  v.win = d.win;
+  v.z = d.z;
+  v.inv_w = d.inv_w;
   return v;
 }
 
@@ -164,15 +167,21 @@ bool PrimAssembler::plain_points() const {
   return !frag_.observer && !ps.sprite && !ps.smooth && !ps.multisample;
 }
 
-bool PrimAssembler::point_pixels(const PrimVertex& p, PixelBox& box) {
-  if (outcode(p) != 0) return false;
-  if (frag_.line.stipple) stipple_counter_ = 0;  // as point_piece
+bool PrimAssembler::point_pixels(const glm::vec4& clip, float eye_z, PointPixels& out) {
+  if (planes_.outcode(clip) != 0) return false;  // as point()
+  if (frag_.line.stipple) stipple_counter_ = 0;   // as point_piece
+  const DownVertex d = to_down_window(clip, window_);
+  const PointState& ps = frag_.point;
   RasterQuad q;
-  if (!point_quad(p.win, clamp_size(p.point_size), fb_height_, q)) return false;
+  if (!point_quad(d.win, clamp_size(ps.attenuated() ? derived_point_size(ps, eye_z) : ps.size), fb_height_, q)) {
+    return false;
+  }
   // The square's sides lie on pixel boundaries: the pixels from its left and bottom sides up
   // to those before its right and top ones.
-  box.x0 = int(q.corner[0].x / kSubpixelOne), box.y0 = int(q.corner[0].y / kSubpixelOne);
-  box.x1 = int(q.corner[2].x / kSubpixelOne) - 1, box.y1 = int(q.corner[2].y / kSubpixelOne) - 1;
+  out.box = {int(q.corner[0].x / kSubpixelOne), int(q.corner[0].y / kSubpixelOne),
+             int(q.corner[2].x / kSubpixelOne) - 1, int(q.corner[2].y / kSubpixelOne) - 1};
+  out.z = d.z;
+  out.inv_w = d.inv_w;
   return true;
 }
 

@@ -42,6 +42,13 @@ struct PixelBox {
   int x0, y0, x1, y1;
 };
 
+/// An aliased point's pixels (GL window coordinates, y up; not cut to the framebuffer), and
+/// the window depth and 1/w every fragment of it takes.
+struct PointPixels {
+  PixelBox box;
+  float z, inv_w;
+};
+
 /// A corner of a piece: GL window position (y up), depth, 1/w and attributes.
 struct PieceCorner {
   double x, y;
@@ -93,12 +100,12 @@ class PrimAssembler {
   /// values (no sprite, smoothing or multisampling, no observer): point_pixels can say which
   /// pixels each covers.
   bool plain_points() const;
-  /// A point of a draw with plain_points(), as point() would draw it without its attributes:
-  /// false when it is clipped away or covers nothing, else the pixels of its square (GL
-  /// window coordinates, y up, inclusive; not cut to the framebuffer). Its fragments take the
-  /// vertex's depth and attributes (flat shading's too: the point is its own provoking
-  /// vertex): the values point()'s piece gives every pixel centre it covers.
-  bool point_pixels(const PrimVertex& p, PixelBox& box);
+  /// The point at `clip` (eye-space z `eye_z`) of a draw with plain_points(), as point()
+  /// would draw make_vertex's vertex there, without its attributes: false when it is clipped
+  /// away or covers nothing, else the pixels of its square. Its fragments take the vertex's
+  /// depth and attributes (flat shading's too: the point is its own provoking vertex): the
+  /// values point()'s piece gives every pixel centre it covers.
+  bool point_pixels(const glm::vec4& clip, float eye_z, PointPixels& out);
   /// A triangle of a draw with some face in GL_LINE or GL_POINT mode (every triangle of such a
   /// draw comes here, filled ones too): `flags` are its TriangleFlag bits.
   void triangle(const PrimVertex (&v)[3], std::uint8_t flags, std::uint32_t provoking, PieceSink& sink);
@@ -132,6 +139,7 @@ class PrimAssembler {
 
   const FragmentState& frag_;
   Viewport viewport_;
+  DownTransform window_;  // viewport_'s, for fb_height_
   int fb_height_;
   bool flat_;
   ClipSpace planes_;
