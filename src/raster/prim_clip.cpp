@@ -77,7 +77,9 @@ DownTransform::DownTransform(const Viewport& vp, int fb_height)
 DownVertex to_down_window(const glm::vec4& clip, const DownTransform& t, bool fused) {
   const float inv_w = 1.0f / clip.w;
   const float x = clip.x * inv_w, y = clip.y * inv_w, z = clip.z * inv_w;
-  if (fused) return {{std::fma(x, t.half_width, t.tx), std::fma(y, -t.half_height, t.ty)}, std::fma(z, t.sz, t.tz), inv_w};
+  if (fused) {
+    return {{std::fma(x, t.half_width, t.tx), std::fma(y, -t.half_height, t.ty)}, std::fma(z, t.sz, t.tz), inv_w};
+  }
   return {{x * t.half_width + t.tx, y * -t.half_height + t.ty}, z * t.sz + t.tz, inv_w};
 }
 
