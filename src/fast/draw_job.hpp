@@ -184,6 +184,9 @@ struct ClippedTriangle {
   std::uint32_t coverage = kNoCoverage;  ///< a smooth line's or point's, in the chunk's list
   bool offset = true;  ///< takes glPolygonOffset's fill offset (lines and points have theirs)
   bool polygon = true;  ///< a polygon's: the polygon stipple applies (not a line's or a point's)
+  /// An aliased line's parallelogram (Piece::parallelogram): v are its corners 0, 1, 2
+  /// (counter-clockwise), corner 3 follows them in clip_vertices; one plane, triangle v's.
+  bool parallelogram = false;
 };
 
 /// A point drawn as the box of pixels it covers (PrimAssembler::point_pixels): no edges, one

@@ -1,8 +1,9 @@
 // Lines, points and unfilled polygons on the fast pipeline: each vertex's clip coordinates
 // (the reference's projection) and its varyings expanded into the reference's attributes, the
 // reference's primitive assembly, and each piece it makes stored in the setup chunk as clipped
-// triangles are (window vertices, compact varyings) and binned; aliased points, whose
-// fragments all take the point's values, stored as boxes of pixels (PointBox) instead.
+// triangles are (window vertices, compact varyings) and binned (an aliased line's
+// parallelogram as one entry); aliased points, whose fragments all take the point's values,
+// stored as boxes of pixels (PointBox) instead.
 #include "fast/prims.hpp"
 
 #include <algorithm>
@@ -44,6 +45,20 @@ class ChunkSink final : public detail::PieceSink {
     if (p.coverage.kind != detail::Coverage::Kind::kNone) {
       coverage = std::uint32_t(chunk_.coverage.size());
       chunk_.coverage.push_back(p.coverage);
+    }
+    if (p.parallelogram) {  // one entry, one plane
+      ClippedTriangle ct;
+      for (int k = 0; k < 3; ++k) ct.v[k] = std::uint32_t(base + std::size_t(k));
+      ct.provoking = p.provoking;
+      ct.coverage = coverage;
+      ct.offset = false;
+      ct.polygon = false;
+      ct.parallelogram = true;
+      const std::uint32_t entry = std::uint32_t(chunk_.clipped.size()) | kBinClipped | (p.front ? kBinFront : 0);
+      chunk_.clipped.push_back(ct);
+      const RasterVertex* c = &chunk_.clip_vertices[base];
+      bin_parallelogram(job_, chunk_, c[0], c[1], c[2], c[3], entry);
+      return;
     }
     for (int t = 0; t < p.triangles; ++t) {
       ClippedTriangle ct;

@@ -504,12 +504,14 @@ inline void scalar_row(const DrawJob& job, const TriSetup& t, WorkerScratch& ws,
 
 // Coverage, then depth (reference_raster.inl: b = w * (1 / area), z = plane_depth(b0, b1)),
 // for the block whose top-left pixel is (x, y); e[r] are row r's edge values; `box`: t is a
-// point's box (TriSetup::box), whose lanes box_lanes keeps; `bound` the block's depth bound
-// for the depth-testing and textured kernels to keep (block_bounds), or null.
+// point's box (TriSetup::box), whose lanes box_lanes keeps; `quad`: t is a parallelogram
+// (TriSetup::parallelogram), whose edges 0 and 2 are also bounded by upper[0] and upper[1];
+// `bound` the block's depth bound for the depth-testing and textured kernels to keep
+// (block_bounds), or null.
 template <Path kPath, BlockKernel kKernel, bool kCoverage>
 HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, WorkerScratch& ws,
-                      GroupCounts& counts, int x, int y, bool interior, bool box, const VD e[kRows][3],
-                      const VD thr[3], [[maybe_unused]] float* bound) {
+                      GroupCounts& counts, int x, int y, bool interior, bool box, bool quad,
+                      const VD e[kRows][3], const VD thr[3], const VD upper[2], [[maybe_unused]] float* bound) {
   const DD dd;
   const DF df;
   const int lanes = int(hn::Lanes(dd));
@@ -517,6 +519,7 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
   #pragma GCC unroll 4
   for (int r = 0; r < kRows; ++r) {
     auto cov = hn::And(hn::And(hn::Ge(e[r][0], thr[0]), hn::Ge(e[r][1], thr[1])), hn::Ge(e[r][2], thr[2]));
+    if (quad) cov = hn::And(cov, hn::And(hn::Le(e[r][0], upper[0]), hn::Le(e[r][2], upper[1])));
     bits |= bits_of_mask(dd, cov) << (r * lanes);
   }
   if (box) bits &= box_lanes(t, x, y, lanes);  // a point's box (t.box), whose edges cover every lane
@@ -583,20 +586,22 @@ struct RowSpan {
   int first, last;
 };
 
-// Per edge of a triangle: its step a pixel right, 1 / (that step times the block width), and
-// the coverage threshold.
+// Per bound of a triangle (its three edges; a parallelogram's also edges 0 and 2 negated,
+// their upper bounds as lower ones): its step a pixel right, 1 / (that step times the block
+// width), and the coverage threshold.
+constexpr int kMaxBounds = 5;
 struct SpanEdges {
-  std::int64_t step[3];
-  double inv_block_step[3];
-  std::int64_t threshold[3];
+  int count;
+  std::int64_t step[kMaxBounds];
+  double inv_block_step[kMaxBounds];
+  std::int64_t threshold[kMaxBounds];
 };
 
-HWY_INLINE RowSpan row_span(const SpanEdges& s, const std::int64_t top[3], const std::int64_t bottom[3], int lanes,
-                            int blocks) {
+HWY_INLINE RowSpan row_span(const SpanEdges& s, const std::int64_t top[kMaxBounds],
+                            const std::int64_t bottom[kMaxBounds], int lanes, int blocks) {
   constexpr double kSlack = 0x1p-46;  // above a product's relative rounding error
   double first = 0.0, last = double(blocks - 1);
-  #pragma GCC unroll 3
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < s.count; ++k) {
     const std::int64_t hi = std::max(top[k], bottom[k]), a = s.step[k], thr = s.threshold[k];
     if (a == 0) {  // the same value along the row
       if (hi < thr) return {0, -1};
@@ -640,6 +645,15 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
     lane_step[e] = hn::Mul(hn::Iota(dd, 0.0), hn::Set(dd, double(span.step[e])));
     thr[e] = hn::Set(dd, t.threshold[e]);
   }
+  const bool quad = t.parallelogram;  // read once, as box
+  VD upper[2] = {hn::Zero(dd), hn::Zero(dd)};
+  span.count = 3;
+  if (quad) {  // edges 0 and 2 bounded above: -e >= -upper
+    upper[0] = hn::Set(dd, t.upper[0]), upper[1] = hn::Set(dd, t.upper[2]);
+    span.count = kMaxBounds;
+    span.step[3] = -span.step[0], span.threshold[3] = -std::int64_t(t.upper[0]);
+    span.step[4] = -span.step[2], span.threshold[4] = -std::int64_t(t.upper[2]);
+  }
   // Blocks start on even rows (tiles do): a row above the triangle's box or below it inside
   // the tile has no covered pixel, and rows past the framebuffer's bottom are masked.
   const int gx0 = t.x0 & ~(lanes - 1);
@@ -667,12 +681,14 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   const bool spans = blocks >= kSpanBlocks;
   RowSpan row_spans[kTileSize / kRows];
   if (spans) {
-    #pragma GCC unroll 4
-    for (int k = 0; k < 3; ++k) span.inv_block_step[k] = span.step[k] ? 1.0 / double(span.step[k] * lanes) : 0.0;
-    std::int64_t top[3] = {row_start[0], row_start[1], row_start[2]}, bottom[3];
+    for (int k = 0; k < span.count; ++k) {
+      span.inv_block_step[k] = span.step[k] ? 1.0 / double(span.step[k] * lanes) : 0.0;
+    }
+    std::int64_t top[kMaxBounds] = {row_start[0], row_start[1], row_start[2]}, bottom[kMaxBounds];
     for (int j = 0, y = gy0; y <= t.y1; y += kRows, ++j) {
       #pragma GCC unroll 4
       for (int k = 0; k < 3; ++k) bottom[k] = top[k] + row_step[k] * (kRows - 1);
+      top[3] = -top[0], top[4] = -top[2], bottom[3] = -bottom[0], bottom[4] = -bottom[2];
       row_spans[j] = row_span(span, top, bottom, lanes, blocks);
       #pragma GCC unroll 4
       for (int k = 0; k < 3; ++k) top[k] += row_step[k] * kRows;
@@ -694,7 +710,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
       float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
       // Not `*bound > reject`: a bound or a depth that is not a number hides nothing.
       if (!bound || !(*bound <= reject)) {
-        block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, box, e, thr, bound);
+        block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, box, quad, e, thr, upper, bound);
       }
       #pragma GCC unroll 4
       for (int r = 0; r < kRows; ++r) {

@@ -69,15 +69,18 @@ bool tile_touches_edge(const RasterVertex& a, const RasterVertex& b, std::int64_
 
 }  // namespace
 
-void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
-                  const RasterVertex& b, const RasterVertex& c, std::uint32_t entry) {
-  std::int64_t area = (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
-                      (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
-  if (area == 0) return;  // the rasterizer draws nothing
+namespace {
+
+// Bins the convex polygon v[0..n-1] (counter-clockwise, n = 3 or 4) into the tiles of its
+// pixel box that some edge test does not rule out.
+void bin_convex(const DrawJob& job, SetupChunk& chunk, const RasterVertex* const* v, int n, std::uint32_t entry) {
   const DrawPlan& p = job.plan;
-  std::int64_t min_x = std::min({a.sx, b.sx, c.sx}), max_x = std::max({a.sx, b.sx, c.sx});
-  std::int64_t min_y = std::min({a.sy, b.sy, c.sy}), max_y = std::max({a.sy, b.sy, c.sy});
-  // The pixels whose centres lie in the triangle's box, in the framebuffer and the scissor box.
+  std::int64_t min_x = v[0]->sx, max_x = v[0]->sx, min_y = v[0]->sy, max_y = v[0]->sy;
+  for (int k = 1; k < n; ++k) {
+    min_x = std::min<std::int64_t>(min_x, v[k]->sx), max_x = std::max<std::int64_t>(max_x, v[k]->sx);
+    min_y = std::min<std::int64_t>(min_y, v[k]->sy), max_y = std::max<std::int64_t>(max_y, v[k]->sy);
+  }
+  // The pixels whose centres lie in the polygon's box, in the framebuffer and the scissor box.
   int x0 = std::max(p.box_x0, first_centre(min_x)), x1 = std::min(p.box_x1, last_centre(max_x));
   int y0 = std::max(p.box_y0, first_centre(min_y)), y1 = std::min(p.box_y1, last_centre(max_y));
   if (x0 > x1 || y0 > y1) return;
@@ -87,23 +90,42 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
     return;
   }
   bool test_tiles = (tx1 - tx0 + 1) * (ty1 - ty0 + 1) > 2;
-  // Edges of the counter-clockwise triangle and their thresholds (0 if owned, else 1).
-  const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
-  std::int64_t t[3];
-  for (int e = 0; e < 3; ++e) {
-    const RasterVertex &p = *v[kEdgeFrom[e]], &q = *v[kEdgeTo[e]];
-    t[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0 : 1;
+  // The edges' thresholds (0 if owned, else 1).
+  std::int64_t t[4];
+  for (int e = 0; e < n; ++e) {
+    const RasterVertex &a = *v[e], &b = *v[(e + 1) % n];
+    t[e] = detail::owns_edge({a.sx, a.sy}, {b.sx, b.sy}) ? 0 : 1;
   }
   for (int ty = ty0; ty <= ty1; ++ty) {
     for (int tx = tx0; tx <= tx1; ++tx) {
-      if (test_tiles && !(tile_touches_edge(*v[1], *v[2], t[0], tx, ty) &&
-                          tile_touches_edge(*v[2], *v[0], t[1], tx, ty) &&
-                          tile_touches_edge(*v[0], *v[1], t[2], tx, ty))) {
-        continue;
-      }
-      chunk.bins[std::size_t(ty) * job.tiles_x + tx].push_back(entry);
+      bool touches = true;
+      for (int e = 0; e < n && test_tiles; ++e) touches = touches && tile_touches_edge(*v[e], *v[(e + 1) % n], t[e], tx, ty);
+      if (touches) chunk.bins[std::size_t(ty) * job.tiles_x + tx].push_back(entry);
     }
   }
+}
+
+std::int64_t snapped_area(const RasterVertex& a, const RasterVertex& b, const RasterVertex& c) {
+  return (std::int64_t(b.sx) - a.sx) * (std::int64_t(c.sy) - a.sy) -
+         (std::int64_t(b.sy) - a.sy) * (std::int64_t(c.sx) - a.sx);
+}
+
+}  // namespace
+
+void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
+                  const RasterVertex& b, const RasterVertex& c, std::uint32_t entry) {
+  const std::int64_t area = snapped_area(a, b, c);
+  if (area == 0) return;  // the rasterizer draws nothing
+  const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
+  bin_convex(job, chunk, v, 3, entry);
+}
+
+void bin_parallelogram(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
+                       const RasterVertex& c, const RasterVertex& d, std::uint32_t entry) {
+  const std::int64_t area = snapped_area(a, b, c);
+  if (area == 0) return;  // the rasterizer draws nothing
+  const RasterVertex* v[4] = {&a, area > 0 ? &b : &d, &c, area > 0 ? &d : &b};
+  bin_convex(job, chunk, v, 4, entry);
 }
 
 namespace {

@@ -37,8 +37,10 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
     if (ct.coverage != ClippedTriangle::kNoCoverage) t.coverage = &ch.coverage[ct.coverage];
     offset = ct.offset;
     t.polygon = ct.polygon;
+    t.parallelogram = ct.parallelogram;
     return;
   }
+  t.parallelogram = false;
   const Triangle& tri = job.triangles[index];
   #pragma GCC unroll 3
   for (int k = 0; k < 3; ++k) {
@@ -48,13 +50,18 @@ void resolve(const DrawJob& job, int chunk, std::uint32_t entry, const RasterVer
   t.provoking_index = tri[2];
 }
 
-// The pixels whose centres lie in the triangle's box, cut to the tile and to the draw's
-// pixel box (the framebuffer and the scissor box).
-bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t) {
+// The pixels whose centres lie in the box of the triangle (and of `fourth`, a parallelogram's
+// fourth corner, when given), cut to the tile and to the draw's pixel box (the framebuffer
+// and the scissor box).
+bool pixel_box(const DrawJob& job, int tx, int ty, TriSetup& t, const detail::FixedPoint* fourth) {
   std::int64_t min_x = std::min({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t max_x = std::max({t.v[0]->sx, t.v[1]->sx, t.v[2]->sx});
   std::int64_t min_y = std::min({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
   std::int64_t max_y = std::max({t.v[0]->sy, t.v[1]->sy, t.v[2]->sy});
+  if (fourth) {
+    min_x = std::min(min_x, fourth->x), max_x = std::max(max_x, fourth->x);
+    min_y = std::min(min_y, fourth->y), max_y = std::max(max_y, fourth->y);
+  }
   const DrawPlan& p = job.plan;
   t.x0 = std::max({tx, p.box_x0, first_centre(min_x)});
   t.x1 = std::min({p.box_x1, tx + kTileSize - 1, last_centre(max_x)});
@@ -90,6 +97,7 @@ bool setup_box(const DrawJob& job, int chunk, std::uint32_t entry, int tx, int t
   t.offset = 0.0f;
   t.coverage = nullptr;
   t.polygon = false;
+  t.parallelogram = false;
   t.provoking_index = b.vertex;
   t.box = true;
   return true;
@@ -115,7 +123,14 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
   t.area = area > 0 ? area : -area;
   t.inv_area = 1.0 / double(t.area);
   t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
-  if (!pixel_box(job, tx, ty, t)) return false;
+  // A parallelogram's fourth corner, opposite v[1]; turned clockwise, it covers nothing
+  // (reference_raster.inl's rasterize_parallelogram).
+  detail::FixedPoint fourth{};
+  if (t.parallelogram) {
+    if (area < 0) return false;
+    fourth = {std::int64_t(a.sx) + c.sx - b.sx, std::int64_t(a.sy) + c.sy - b.sy};
+  }
+  if (!pixel_box(job, tx, ty, t, t.parallelogram ? &fourth : nullptr)) return false;
   t.depth = detail::depth_plane(t.v[0]->z, t.v[1]->z, t.v[2]->z);
   #pragma GCC unroll 3
   for (int e = 0; e < 3; ++e) {
@@ -124,6 +139,15 @@ bool setup_triangle(const DrawJob& job, int chunk, std::uint32_t entry, int tx, 
     t.dx[e] = std::int64_t(q.sx) - p.sx;
     t.dy[e] = std::int64_t(q.sy) - p.sy;
     t.threshold[e] = detail::owns_edge({p.sx, p.sy}, {q.sx, q.sy}) ? 0.0 : 1.0;
+  }
+  if (t.parallelogram) {
+    // Side c -> d is edge 2 (a -> b) turned round: its value area - e2 (and d -> a's area -
+    // e0), covered where that is at least its own threshold.
+    const detail::FixedPoint pa{a.sx, a.sy}, pc{c.sx, c.sy};
+    t.threshold[1] = -0x1p62;
+    t.upper[0] = double(t.area) - (detail::owns_edge(fourth, pa) ? 0.0 : 1.0);
+    t.upper[1] = 0x1p62;
+    t.upper[2] = double(t.area) - (detail::owns_edge(pc, fourth) ? 0.0 : 1.0);
   }
   t.front = (entry & kBinFront) != 0;
   const std::size_t stride = std::size_t(job.plan.layout.count);

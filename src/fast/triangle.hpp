@@ -25,6 +25,12 @@ struct TriSetup {
   float offset;               ///< polygon offset added to depth
   const detail::Coverage* coverage;  ///< a smooth line's or point's, else null
   bool polygon;  ///< a polygon's (the polygon stipple applies), not a line's or a point's
+  /// An aliased line's parallelogram (ClippedTriangle::parallelogram): v are corners 0, 1, 2
+  /// and the planes theirs. Edge 1 (the diagonal) bounds nothing (its threshold below every
+  /// value); the opposite sides bound edges 0 and 2 from above: a pixel is covered where
+  /// also edge e's value <= upper[e] (e = 0, 2).
+  bool parallelogram;
+  double upper[3];
   int x0, x1, y0, y1;         ///< pixel box within the framebuffer and the tile
   /// A point's box (PointBox): its pixels are the box's, its three vertices the point itself
   /// (zero edges, all covering, and zero slopes: each fragment takes the point's values).

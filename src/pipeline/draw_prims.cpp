@@ -1,6 +1,7 @@
 // The reference pipeline's lines, points and unfilled polygons: primitive assembly
-// (raster/prims.cpp) hands it pieces, each rasterized as one or two triangles by the reference
-// rasterizer, their fragments through the same per-fragment path as the triangles'.
+// (raster/prims.cpp) hands it pieces, each rasterized as one or two triangles (an aliased
+// line's as one parallelogram) by the reference rasterizer, their fragments through the same
+// per-fragment path as the triangles'.
 #include <algorithm>
 
 #include "pipeline/reference_draw.hpp"
@@ -21,6 +22,11 @@ class ReferenceSink final : public PieceSink {
       w[k] = {c.x, c.y, c.z, c.inv_w, &c.attr};
     }
     const Coverage* coverage = p.coverage.kind == Coverage::Kind::kNone ? nullptr : &p.coverage;
+    const auto emit = [&](const Fragment& f) { reference_fragment(ctx_, f, p.front, 0.0f, coverage, p.polygon); };
+    if (p.parallelogram) {
+      rasterize_parallelogram(w[0], w[1], w[2], w[3], fb.width, fb.height, textured_units(*ctx_.shade), emit);
+      return;
+    }
     for (int t = 0; t < p.triangles; ++t) {
       const WindowVertex &a = w[p.tri[t][0]], &b = w[p.tri[t][1]], &c = w[p.tri[t][2]];
       const float offset = p.offset ? polygon_offset(a, b, c, *ctx_.fragment) : 0.0f;

@@ -80,6 +80,7 @@ void start_piece(Piece& p, bool front, std::uint32_t provoking) {
   p.front = front;
   p.offset = false;
   p.polygon = false;
+  p.parallelogram = false;
   p.provoking = provoking;
   p.coverage = Coverage{};
 }
@@ -242,6 +243,7 @@ void PrimAssembler::aliased_line(const PrimVertex& a, const PrimVertex& b, bool 
       c.z = p.corner[same].z, c.inv_w = p.corner[same].inv_w, c.attr = p.corner[same].attr;
     }
   }
+  p.parallelogram = true;
   flat_colors(p);
   sink.piece(p);
 }
@@ -451,6 +453,7 @@ void PrimAssembler::fan_triangle(const PrimVertex* v[3], std::uint8_t flags, std
     p.front = front_colors;
     p.offset = frag_.polygon_offset;
     p.polygon = true;
+    p.parallelogram = false;
     p.provoking = provoking;
     p.coverage = Coverage{};
     flat_colors(p);

@@ -68,6 +68,10 @@ struct Piece {
   bool front = true;
   bool offset = false;
   bool polygon = false;  ///< a filled polygon's triangle: the polygon stipple applies
+  /// An aliased line's quadrilateral: corners 0..3 a parallelogram (corner 3 - corner 2 =
+  /// corner 0 - corner 1) drawn with one plane, triangle (0, 1, 2)'s, over the pixels of both
+  /// triangles (rasterize_parallelogram).
+  bool parallelogram = false;
   std::uint32_t provoking = 0;
   Coverage coverage;
 };

@@ -93,70 +93,146 @@ inline float plane_depth(float b0, float b1, const DepthPlane& p) {
   return (p.base + t0) + t1;
 }
 
+/// A triangle made ready for its fragments: counter-clockwise vertices, snapped positions,
+/// 1 / (twice its area), whether its vertices share 1/w, its depth plane.
+struct OrientedTriangle {
+  const WindowVertex* v[3];
+  FixedPoint p[3];
+  std::int64_t area;
+  double inv_area;
+  bool affine;
+  DepthPlane dz;
+};
+
+/// False for a triangle of zero snapped area.
+inline bool orient_triangle(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                            OrientedTriangle& t) {
+  t.v[0] = &a, t.v[1] = &b, t.v[2] = &c;
+  t.p[0] = snap(a.x, a.y), t.p[1] = snap(b.x, b.y), t.p[2] = snap(c.x, c.y);
+  t.area = edge_function(t.p[0], t.p[1], t.p[2]);
+  if (t.area == 0) return false;
+  if (t.area < 0) {  // make it counter-clockwise; the weights follow the vertices
+    std::swap(t.v[1], t.v[2]);
+    std::swap(t.p[1], t.p[2]);
+    t.area = -t.area;
+  }
+  t.inv_area = 1.0 / double(t.area);
+  // Equal 1/w at the three vertices (an orthographic view, or a face-on triangle): the
+  // perspective weights are the screen-space ones, taken as they are.
+  t.affine = t.v[0]->inv_w == t.v[1]->inv_w && t.v[1]->inv_w == t.v[2]->inv_w;
+  t.dz = depth_plane(t.v[0]->z, t.v[1]->z, t.v[2]->z);
+  return true;
+}
+
+/// The fragment at pixel (x, y), whose edge functions of the triangle's edges v1->v2 and
+/// v2->v0 are w0 and w1: depth and attributes from the triangle's planes.
+inline void plane_fragment(const OrientedTriangle& t, int x, int y, std::int64_t w0, std::int64_t w1, int height,
+                           unsigned texture_units, Fragment& frag) {
+  const WindowVertex* const* v = t.v;
+  // Screen-space barycentrics: depth is linear in window space (GL 1.5 section 3.5.1).
+  double b0 = double(w0) * t.inv_area, b1 = double(w1) * t.inv_area;
+  double b2 = 1.0 - b0 - b1;
+  frag.x = x;
+  frag.y = y;
+  frag.z = plane_depth(float(b0), float(b1), t.dz);
+  // Perspective-correct attributes: interpolate a/w and 1/w, then divide.
+  double q0 = b0, q1 = b1, q2 = b2;
+  if (!t.affine) {
+    q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
+    double inv = 1.0 / (q0 + q1 + q2);
+    q0 *= inv;
+    q1 *= inv;
+    q2 *= inv;
+  }
+  for (int i = 0; i < kAttrCount; ++i) {
+    frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] + q2 * (*v[2]->attr)[i]);
+  }
+  if (texture_units) {
+    const FloatWeights tw = texcoord_weights(v, double(w0), double(w1), t.inv_area, t.affine);
+    for (int u = 0; u < kMaxTextureUnits; ++u) {
+      if (!(texture_units >> u & 1u)) continue;
+      fragment_texcoords(v, tw, kTexCoord + 4 * u, frag);
+      frag.texture_derivatives[std::size_t(u)] = texture_derivatives(v, t.p, x, y, height, kTexCoord + 4 * u);
+    }
+  }
+}
+
+/// The pixels whose centres lie in the box of snapped points p[0..n-1], one pixel wider on
+/// each side, within the framebuffer.
+struct PixelRange {
+  int x0, x1, y0, y1;
+};
+
+inline PixelRange pixel_range(const FixedPoint* p, int n, int width, int height) {
+  std::int64_t min_x = p[0].x, max_x = p[0].x, min_y = p[0].y, max_y = p[0].y;
+  for (int k = 1; k < n; ++k) {
+    min_x = std::min(min_x, p[k].x), max_x = std::max(max_x, p[k].x);
+    min_y = std::min(min_y, p[k].y), max_y = std::max(max_y, p[k].y);
+  }
+  return {static_cast<int>(std::max<std::int64_t>(0, (min_x >> kSubpixelBits) - 1)),
+          static_cast<int>(std::min<std::int64_t>(width - 1, (max_x >> kSubpixelBits) + 1)),
+          static_cast<int>(std::max<std::int64_t>(0, (min_y >> kSubpixelBits) - 1)),
+          static_cast<int>(std::min<std::int64_t>(height - 1, (max_y >> kSubpixelBits) + 1))};
+}
+
+inline FixedPoint pixel_centre(int x, int y) {
+  return {std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2, std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2};
+}
+
 template <class Emit>
 std::uint64_t rasterize_triangle(const WindowVertex& a, const WindowVertex& b,
                                  const WindowVertex& c, int width, int height, unsigned texture_units,
                                  Emit&& emit) {
-  const WindowVertex* v[3] = {&a, &b, &c};
-  FixedPoint p[3] = {snap(a.x, a.y), snap(b.x, b.y), snap(c.x, c.y)};
-  std::int64_t area = edge_function(p[0], p[1], p[2]);
-  if (area == 0) return 0;
-  if (area < 0) {  // make it counter-clockwise; the weights follow the vertices
-    std::swap(v[1], v[2]);
-    std::swap(p[1], p[2]);
-    area = -area;
-  }
+  OrientedTriangle t;
+  if (!orient_triangle(a, b, c, t)) return 0;
+  const FixedPoint* p = t.p;
   // Bias of -1 on edges the triangle does not own turns "> 0 or (== 0 and owned)" into ">= 0".
   std::int64_t bias[3] = {owns_edge(p[1], p[2]) ? 0 : -1, owns_edge(p[2], p[0]) ? 0 : -1,
                           owns_edge(p[0], p[1]) ? 0 : -1};
-  std::int64_t min_x = std::min({p[0].x, p[1].x, p[2].x}), max_x = std::max({p[0].x, p[1].x, p[2].x});
-  std::int64_t min_y = std::min({p[0].y, p[1].y, p[2].y}), max_y = std::max({p[0].y, p[1].y, p[2].y});
-  int x0 = static_cast<int>(std::max<std::int64_t>(0, (min_x >> kSubpixelBits) - 1));
-  int x1 = static_cast<int>(std::min<std::int64_t>(width - 1, (max_x >> kSubpixelBits) + 1));
-  int y0 = static_cast<int>(std::max<std::int64_t>(0, (min_y >> kSubpixelBits) - 1));
-  int y1 = static_cast<int>(std::min<std::int64_t>(height - 1, (max_y >> kSubpixelBits) + 1));
+  const PixelRange r = pixel_range(p, 3, width, height);
   std::uint64_t covered = 0;
   Fragment frag;
-  const double inv_area = 1.0 / double(area);
-  // Equal 1/w at the three vertices (an orthographic view, or a face-on triangle): the
-  // perspective weights are the screen-space ones, taken as they are.
-  const bool affine = v[0]->inv_w == v[1]->inv_w && v[1]->inv_w == v[2]->inv_w;
-  const DepthPlane dz = depth_plane(v[0]->z, v[1]->z, v[2]->z);
-  for (int y = y0; y <= y1; ++y) {
-    for (int x = x0; x <= x1; ++x) {
-      FixedPoint centre{std::int64_t(x) * kSubpixelOne + kSubpixelOne / 2,
-                        std::int64_t(y) * kSubpixelOne + kSubpixelOne / 2};
+  for (int y = r.y0; y <= r.y1; ++y) {
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const FixedPoint centre = pixel_centre(x, y);
       std::int64_t w0 = edge_function(p[1], p[2], centre);
       std::int64_t w1 = edge_function(p[2], p[0], centre);
       std::int64_t w2 = edge_function(p[0], p[1], centre);
       if (w0 + bias[0] < 0 || w1 + bias[1] < 0 || w2 + bias[2] < 0) continue;
-      // Screen-space barycentrics: depth is linear in window space (GL 1.5 section 3.5.1).
-      double b0 = double(w0) * inv_area, b1 = double(w1) * inv_area;
-      double b2 = 1.0 - b0 - b1;
-      frag.x = x;
-      frag.y = y;
-      frag.z = plane_depth(float(b0), float(b1), dz);
-      // Perspective-correct attributes: interpolate a/w and 1/w, then divide.
-      double q0 = b0, q1 = b1, q2 = b2;
-      if (!affine) {
-        q0 = b0 * v[0]->inv_w, q1 = b1 * v[1]->inv_w, q2 = b2 * v[2]->inv_w;
-        double inv = 1.0 / (q0 + q1 + q2);
-        q0 *= inv;
-        q1 *= inv;
-        q2 *= inv;
-      }
-      for (int i = 0; i < kAttrCount; ++i) {
-        frag.attr[i] = static_cast<float>(q0 * (*v[0]->attr)[i] + q1 * (*v[1]->attr)[i] +
-                                          q2 * (*v[2]->attr)[i]);
-      }
-      if (texture_units) {
-        const FloatWeights tw = texcoord_weights(v, double(w0), double(w1), inv_area, affine);
-        for (int u = 0; u < kMaxTextureUnits; ++u) {
-          if (!(texture_units >> u & 1u)) continue;
-          fragment_texcoords(v, tw, kTexCoord + 4 * u, frag);
-          frag.texture_derivatives[std::size_t(u)] = texture_derivatives(v, p, x, y, height, kTexCoord + 4 * u);
-        }
-      }
+      plane_fragment(t, x, y, w0, w1, height, texture_units, frag);
+      ++covered;
+      emit(frag);
+    }
+  }
+  return covered;
+}
+
+/// The counter-clockwise parallelogram a, b, c, d (d - c = a - b, as an aliased line's
+/// quadrilateral) with one plane: it covers the pixels its four edges cover (what its
+/// triangles (a, b, c) and (a, c, d) cover together, by the fill rule), and every fragment
+/// takes triangle (a, b, c)'s depth and attributes, extended past its diagonal, as llvmpipe
+/// gives a line one set of interpolation coefficients. Turned clockwise (inside out), its
+/// edges' inner sides exclude each other: it covers nothing.
+template <class Emit>
+std::uint64_t rasterize_parallelogram(const WindowVertex& a, const WindowVertex& b, const WindowVertex& c,
+                                      const WindowVertex& d, int width, int height, unsigned texture_units,
+                                      Emit&& emit) {
+  OrientedTriangle t;
+  if (!orient_triangle(a, b, c, t) || t.v[1] != &b) return 0;
+  const FixedPoint q[4] = {t.p[0], t.p[1], t.p[2], snap(d.x, d.y)};
+  std::int64_t bias[4];
+  for (int k = 0; k < 4; ++k) bias[k] = owns_edge(q[k], q[(k + 1) % 4]) ? 0 : -1;
+  const PixelRange r = pixel_range(q, 4, width, height);
+  std::uint64_t covered = 0;
+  Fragment frag;
+  for (int y = r.y0; y <= r.y1; ++y) {
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const FixedPoint centre = pixel_centre(x, y);
+      bool inside = true;
+      for (int k = 0; k < 4; ++k) inside = inside && edge_function(q[k], q[(k + 1) % 4], centre) + bias[k] >= 0;
+      if (!inside) continue;
+      plane_fragment(t, x, y, edge_function(t.p[1], t.p[2], centre), edge_function(t.p[2], t.p[0], centre), height,
+                     texture_units, frag);
       ++covered;
       emit(frag);
     }

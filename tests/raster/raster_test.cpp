@@ -1,13 +1,17 @@
 // Properties of the reference rasterizer through draw_triangles: no cracks and no double
 // coverage (counted with additive blending), the top-left fill rule, perspective-correct
-// interpolation, near-plane clipping, depth order, huge coordinates.
+// interpolation, near-plane clipping, depth order, huge coordinates; and the parallelogram an
+// aliased line is drawn as (reference_raster.inl), against its two triangles.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
+#include <utility>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "pipeline/stages.hpp"
 #include "shadelab/pipeline.hpp"
 
 namespace shadelab {
@@ -236,6 +240,74 @@ TEST(Raster, CullingByWindowWinding) {
     d.draw(pos, {{0, 2, 1}});  // clockwise: a back face
     EXPECT_EQ(d.count(5, 5), mode == CullMode::kBack ? 0 : 1);
   }
+}
+
+using PixelFragments = std::map<std::pair<int, int>, detail::Fragment>;
+
+template <class Raster>
+PixelFragments fragments_of(Raster&& raster) {
+  PixelFragments out;
+  raster([&](const detail::Fragment& f) { EXPECT_TRUE(out.emplace(std::pair{f.x, f.y}, f).second); });
+  return out;
+}
+
+TEST(Raster, ParallelogramCoversItsTwoTrianglesWithTheFirstOnesPlane) {
+  // Random parallelograms a, b, c, d = a + c - b on 1/256-pixel corners (lines' sides through
+  // pixel centres among them), in both windings: the pixels are those of triangles (a, b, c)
+  // and (a, c, d) together (clockwise: none); every fragment takes (a, b, c)'s plane, those
+  // of (a, b, c) bit for bit, those past its diagonal within rounding of the plane extended
+  // (d's values are the plane's there).
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> pos(0, 40 * 256), side(-12 * 256, 12 * 256);
+  std::uniform_real_distribution<float> value(-2.0f, 2.0f);
+  int drawn = 0, past_diagonal = 0;
+  for (int round = 0; round < 400; ++round) {
+    // Every fourth: a 2-pixel line's corners, its ends on pixel centres' columns.
+    const bool line = round % 4 == 0;
+    const int ax = line ? (pos(rng) & ~255) + 128 : pos(rng), ay = line ? (pos(rng) & ~255) + 128 : pos(rng);
+    const int ux = line ? side(rng) & ~255 : side(rng), uy = side(rng);
+    const int vx = line ? 0 : side(rng), vy = line ? 512 : side(rng);
+    const double k = 1.0 / 256.0;
+    detail::Attribs attr[4]{};
+    float z[4];
+    for (int i = 0; i < 3; ++i) {
+      z[i] = value(rng) * 0.25f + 0.5f;
+      for (float& a : attr[i]) a = value(rng);
+    }
+    z[3] = z[0] + z[2] - z[1];
+    for (int j = 0; j < detail::kAttrCount; ++j) attr[3][std::size_t(j)] = attr[0][std::size_t(j)] + attr[2][std::size_t(j)] - attr[1][std::size_t(j)];
+    const double x[4] = {ax * k, (ax + ux) * k, (ax + ux + vx) * k, (ax + vx) * k};
+    const double y[4] = {ay * k, (ay + uy) * k, (ay + uy + vy) * k, (ay + vy) * k};
+    detail::WindowVertex v[4];
+    for (int i = 0; i < 4; ++i) v[i] = {x[i], y[i], z[i], 1.0f, &attr[i]};
+    const bool ccw = (double(ux) * (uy + vy) - double(uy) * (ux + vx)) > 0;
+    const PixelFragments quad = fragments_of([&](auto emit) { detail::rasterize_parallelogram(v[0], v[1], v[2], v[3], kW, kH, 0, emit); });
+    const PixelFragments first = fragments_of([&](auto emit) { detail::rasterize_triangle(v[0], v[1], v[2], kW, kH, 0, emit); });
+    const PixelFragments second = fragments_of([&](auto emit) { detail::rasterize_triangle(v[0], v[2], v[3], kW, kH, 0, emit); });
+    if (!ccw) {
+      EXPECT_TRUE(quad.empty()) << "round " << round;
+      continue;
+    }
+    ASSERT_EQ(quad.size(), first.size() + second.size()) << "round " << round;
+    drawn += int(quad.size());
+    for (const auto& [at, f] : quad) {
+      const auto in_first = first.find(at);
+      if (in_first != first.end()) {
+        ASSERT_EQ(f.z, in_first->second.z) << "round " << round;
+        ASSERT_EQ(f.attr, in_first->second.attr) << "round " << round;
+        continue;
+      }
+      const auto in_second = second.find(at);
+      ASSERT_NE(in_second, second.end()) << "round " << round << " pixel " << at.first << "," << at.second;
+      ++past_diagonal;
+      EXPECT_NEAR(f.z, in_second->second.z, 1e-5f) << "round " << round;
+      for (int j = 0; j < detail::kAttrCount; ++j) {
+        EXPECT_NEAR(f.attr[std::size_t(j)], in_second->second.attr[std::size_t(j)], 1e-4f) << "round " << round;
+      }
+    }
+  }
+  EXPECT_GT(drawn, 5000);
+  EXPECT_GT(past_diagonal, 2000);
 }
 
 }  // namespace
