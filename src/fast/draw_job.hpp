@@ -185,7 +185,7 @@ struct ClippedTriangle {
   bool offset = true;  ///< takes glPolygonOffset's fill offset (lines and points have theirs)
   bool polygon = true;  ///< a polygon's: the polygon stipple applies (not a line's or a point's)
   /// An aliased line's parallelogram (Piece::parallelogram): v are its corners 0, 1, 2
-  /// (counter-clockwise), corner 3 follows them in clip_vertices; one plane, triangle v's.
+  /// (counter-clockwise), the fourth v[0] + v[2] - v[1]; one plane, triangle v's.
   bool parallelogram = false;
 };
 

@@ -19,27 +19,40 @@ using detail::Piece;
 using detail::PrimAssembler;
 using detail::PrimVertex;
 
+// Corner k of a piece as a window vertex. An aliased line's corners lie on the 1/256-pixel
+// grid already (line_quad): their snap is exact.
+RasterVertex raster_corner(const Piece& p, int k) {
+  const detail::PieceCorner& c = p.corner[k];
+  RasterVertex r;
+  r.x = c.x;
+  r.y = c.y;
+  if (p.parallelogram) {
+    r.sx = std::int32_t(c.x * double(detail::kSubpixelOne));
+    r.sy = std::int32_t(c.y * double(detail::kSubpixelOne));
+  } else {
+    const detail::FixedPoint s = detail::snap(c.x, c.y);
+    r.sx = std::int32_t(s.x);
+    r.sy = std::int32_t(s.y);
+  }
+  r.z = c.z;
+  r.inv_w = c.inv_w;
+  return r;
+}
+
 class ChunkSink final : public detail::PieceSink {
  public:
   ChunkSink(const DrawJob& job, SetupChunk& chunk) : job_(job), chunk_(chunk) {}
 
   void piece(const Piece& p) override {
     const VaryingLayout& l = job_.plan.layout;
-    const std::size_t base = chunk_.clip_vertices.size();
-    const int corners = p.triangles == 1 ? 3 : 4;
-    for (int k = 0; k < corners; ++k) {
-      const detail::PieceCorner& c = p.corner[k];
-      RasterVertex r;
-      r.x = c.x;
-      r.y = c.y;
-      const detail::FixedPoint s = detail::snap(c.x, c.y);
-      r.sx = std::int32_t(s.x);
-      r.sy = std::int32_t(s.y);
-      r.z = c.z;
-      r.inv_w = c.inv_w;
-      chunk_.clip_vertices.push_back(r);
-      chunk_.clip_varyings.resize(chunk_.clip_varyings.size() + std::size_t(l.count));
-      compact_varyings(l, c.attr, &chunk_.clip_varyings[chunk_.clip_varyings.size() - std::size_t(l.count)]);
+    const std::size_t base = chunk_.clip_vertices.size(), stride = std::size_t(l.count);
+    // A parallelogram's fourth corner follows from the other three: it is binned, not stored.
+    const int corners = p.parallelogram || p.triangles == 1 ? 3 : 4;
+    chunk_.clip_varyings.resize(chunk_.clip_varyings.size() + std::size_t(corners) * stride);
+    float* var = chunk_.clip_varyings.data() + base * stride;
+    for (int k = 0; k < corners; ++k, var += stride) {
+      chunk_.clip_vertices.push_back(raster_corner(p, k));
+      compact_varyings(l, p.corner[k].attr, var);
     }
     std::uint32_t coverage = ClippedTriangle::kNoCoverage;
     if (p.coverage.kind != detail::Coverage::Kind::kNone) {
@@ -57,7 +70,7 @@ class ChunkSink final : public detail::PieceSink {
       const std::uint32_t entry = std::uint32_t(chunk_.clipped.size()) | kBinClipped | (p.front ? kBinFront : 0);
       chunk_.clipped.push_back(ct);
       const RasterVertex* c = &chunk_.clip_vertices[base];
-      bin_parallelogram(job_, chunk_, c[0], c[1], c[2], c[3], entry);
+      bin_parallelogram(job_, chunk_, c[0], c[1], c[2], raster_corner(p, 3), entry);
       return;
     }
     for (int t = 0; t < p.triangles; ++t) {

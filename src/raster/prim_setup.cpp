@@ -171,13 +171,14 @@ bool line_quad(DownPoint a, DownPoint b, float width, int fb_height, RasterQuad&
   const bool x_major = std::fabs(dx) >= std::fabs(dy);
   const DownQuad q = x_major ? x_major_quad(x_major_ends(a, b), half_width)
                              : y_major_quad(y_major_ends(a, b), half_width);
-  for (int k = 0; k < 4; ++k) {
-    out.corner[k] = to_gl(q.x[k], q.y[k], fb_height);
-    // Attributes vary along the major axis only: t at the corner's major coordinate.
-    const double along = x_major ? double(q.x[k]) / kSubpixelOne + 0.5 : double(q.y[k]) / kSubpixelOne + 0.5;
-    const double from = x_major ? a.x : a.y, to = x_major ? b.x : b.y;
-    out.t[k] = float((along - from) / (to - from));
+  // Attributes vary along the major axis only: t at the corner's major coordinate, which
+  // corners 0 and 3 share, and 1 and 2.
+  const double from = x_major ? a.x : a.y, to = x_major ? b.x : b.y;
+  for (int k = 0; k < 2; ++k) {
+    const double along = double(x_major ? q.x[k] : q.y[k]) / kSubpixelOne + 0.5;
+    out.t[k] = out.t[3 - k] = float((along - from) / (to - from));
   }
+  for (int k = 0; k < 4; ++k) out.corner[k] = to_gl(q.x[k], q.y[k], fb_height);
   // A quadrilateral turned inside out (ends moved past each other) covers nothing: llvmpipe
   // tests its four edges, whose inside sides then exclude each other.
   return quad_area(out.corner) > 0;
