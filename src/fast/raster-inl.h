@@ -601,7 +601,9 @@ HWY_INLINE RowSpan row_span(const SpanEdges& s, const std::int64_t top[kMaxBound
                             const std::int64_t bottom[kMaxBounds], int lanes, int blocks) {
   constexpr double kSlack = 0x1p-46;  // above a product's relative rounding error
   double first = 0.0, last = double(blocks - 1);
-  for (int k = 0; k < s.count; ++k) {
+  #pragma GCC unroll 5
+  for (int k = 0; k < kMaxBounds; ++k) {
+    if (k >= s.count) break;
     const std::int64_t hi = std::max(top[k], bottom[k]), a = s.step[k], thr = s.threshold[k];
     if (a == 0) {  // the same value along the row
       if (hi < thr) return {0, -1};
@@ -653,6 +655,8 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
     span.count = kMaxBounds;
     span.step[3] = -span.step[0], span.threshold[3] = -std::int64_t(t.upper[0]);
     span.step[4] = -span.step[2], span.threshold[4] = -std::int64_t(t.upper[2]);
+  } else {
+    span.step[3] = span.step[4] = span.threshold[3] = span.threshold[4] = 0;
   }
   // Blocks start on even rows (tiles do): a row above the triangle's box or below it inside
   // the tile has no covered pixel, and rows past the framebuffer's bottom are masked.

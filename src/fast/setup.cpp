@@ -73,7 +73,9 @@ namespace {
 
 // Bins the convex polygon v[0..n-1] (counter-clockwise, n = 3 or 4) into the tiles of its
 // pixel box that some edge test does not rule out.
-void bin_convex(const DrawJob& job, SetupChunk& chunk, const RasterVertex* const* v, int n, std::uint32_t entry) {
+template <int n>
+[[gnu::always_inline]] inline void bin_convex(const DrawJob& job, SetupChunk& chunk, const RasterVertex* const* v,
+                                              std::uint32_t entry) {
   const DrawPlan& p = job.plan;
   std::int64_t min_x = v[0]->sx, max_x = v[0]->sx, min_y = v[0]->sy, max_y = v[0]->sy;
   for (int k = 1; k < n; ++k) {
@@ -117,7 +119,7 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
   const std::int64_t area = snapped_area(a, b, c);
   if (area == 0) return;  // the rasterizer draws nothing
   const RasterVertex* v[3] = {&a, area > 0 ? &b : &c, area > 0 ? &c : &b};
-  bin_convex(job, chunk, v, 3, entry);
+  bin_convex<3>(job, chunk, v, entry);
 }
 
 void bin_parallelogram(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
@@ -125,7 +127,7 @@ void bin_parallelogram(const DrawJob& job, SetupChunk& chunk, const RasterVertex
   const std::int64_t area = snapped_area(a, b, c);
   if (area == 0) return;  // the rasterizer draws nothing
   const RasterVertex* v[4] = {&a, area > 0 ? &b : &d, &c, area > 0 ? &d : &b};
-  bin_convex(job, chunk, v, 4, entry);
+  bin_convex<4>(job, chunk, v, entry);
 }
 
 namespace {
