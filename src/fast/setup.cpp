@@ -124,9 +124,9 @@ void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a,
 
 void bin_parallelogram(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
                        const RasterVertex& c, const RasterVertex& d, std::uint32_t entry) {
-  const std::int64_t area = snapped_area(a, b, c);
-  if (area == 0) return;  // the rasterizer draws nothing
-  const RasterVertex* v[4] = {&a, area > 0 ? &b : &d, &c, area > 0 ? &d : &b};
+  // Clockwise (inside out), it covers nothing (setup_triangle).
+  if (snapped_area(a, b, c) <= 0) return;
+  const RasterVertex* v[4] = {&a, &b, &c, &d};
   bin_convex<4>(job, chunk, v, entry);
 }
 

@@ -20,8 +20,9 @@ void setup_range(const DrawJob& job, SetupChunk& chunk, std::size_t begin, std::
 void bin_triangle(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
                   const RasterVertex& c, std::uint32_t entry);
 
-/// Bins an aliased line's parallelogram a, b, c, d (d - c = a - b; TriSetup::parallelogram)
-/// as bin entry `entry` into the tiles whose pixel centres it can cover.
+/// Bins an aliased line's counter-clockwise parallelogram a, b, c, d (d - c = a - b;
+/// TriSetup::parallelogram) as bin entry `entry` into the tiles whose pixel centres it can
+/// cover.
 void bin_parallelogram(const DrawJob& job, SetupChunk& chunk, const RasterVertex& a, const RasterVertex& b,
                        const RasterVertex& c, const RasterVertex& d, std::uint32_t entry);
 
