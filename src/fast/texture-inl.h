@@ -159,23 +159,6 @@ HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB
   }
 }
 
-/// texel_words' texels in byte units, the border's where `border0`, `border1` or `row_border`.
-HWY_INLINE void texel_pair(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> row, hn::Mask<DIB> row_border,
-                           hn::Vec<DIB> i0, hn::Mask<DIB> border0, hn::Vec<DIB> i1, hn::Mask<DIB> border1,
-                           VB first[4], VB second[4]) {
-  const DIB di;
-  border0 = hn::Or(border0, row_border), border1 = hn::Or(border1, row_border);
-  hn::Vec<DUB> w0, w1;
-  texel_words(l, row, i0, border0, i1, border1, w0, w1);
-  const bool any0 = !hn::AllFalse(di, border0), any1 = !hn::AllFalse(di, border1);
-  #pragma GCC unroll 4
-  for (int c = 0; c < 4; ++c) {
-    first[c] = channel(w0, c), second[c] = channel(w1, c);
-    if (any0) first[c] = hn::IfThenElse(hn::RebindMask(DB(), border0), hn::Set(DB(), tp.border[c]), first[c]);
-    if (any1) second[c] = hn::IfThenElse(hn::RebindMask(DB(), border1), hn::Set(DB(), tp.border[c]), second[c]);
-  }
-}
-
 /// The reference's bilinear slice of a 2D, cube or 3D colour level at texels (i, j) to
 /// (i + 1, j + 1) of image k, weighted by a across and b down: fetch's texels, each index
 /// wrapped once (a depth texture's compared with `ref` by fetch).
@@ -201,12 +184,28 @@ HWY_INLINE void bilinear_slice(const TexturePlan& tp, const TextureLevel& l, hn:
     const auto image = hn::Mul(tp.three_d ? wrap_index(k, l.depth, tp.wrap_r, bk) : k, hn::Set(di, l.height));
     j0 = hn::Add(image, j0), j1 = hn::Add(image, j1);
   }
+  // The four texels' words, then one channel at a time (converted, the border put in, lerped):
+  // few vectors live at once, which keeps AVX2's sixteen registers from spilling.
   const auto width = hn::Set(di, l.width);
-  VB t00[4], t10[4], t01[4], t11[4];
-  texel_pair(tp, l, hn::Mul(j0, width), hn::Or(bj0, bk), i0, bi0, i1, bi1, t00, t10);
-  texel_pair(tp, l, hn::Mul(j1, width), hn::Or(bj1, bk), i0, bi0, i1, bi1, t01, t11);
+  const auto b00 = hn::Or(hn::Or(bi0, bj0), bk), b10 = hn::Or(hn::Or(bi1, bj0), bk);
+  const auto b01 = hn::Or(hn::Or(bi0, bj1), bk), b11 = hn::Or(hn::Or(bi1, bj1), bk);
+  hn::Vec<DUB> w00, w10, w01, w11;
+  texel_words(l, hn::Mul(j0, width), i0, b00, i1, b10, w00, w10);
+  texel_words(l, hn::Mul(j1, width), i0, b01, i1, b11, w01, w11);
+  const bool any_border = !hn::AllFalse(di, hn::Or(hn::Or(b00, b10), hn::Or(b01, b11)));
+  const DB db;
   #pragma GCC unroll 4
-  for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
+  for (int c = 0; c < 4; ++c) {
+    VB t00 = channel(w00, c), t10 = channel(w10, c), t01 = channel(w01, c), t11 = channel(w11, c);
+    if (any_border) {
+      const VB border = hn::Set(db, tp.border[c]);
+      t00 = hn::IfThenElse(hn::RebindMask(db, b00), border, t00);
+      t10 = hn::IfThenElse(hn::RebindMask(db, b10), border, t10);
+      t01 = hn::IfThenElse(hn::RebindMask(db, b01), border, t01);
+      t11 = hn::IfThenElse(hn::RebindMask(db, b11), border, t11);
+    }
+    out[c] = lerp(lerp(t00, t10, a), lerp(t01, t11, a), b);
+  }
 }
 
 /// texture.cpp's nearest_index: the clamps and mirrored repeat (u >= 0 there) keep a nearest
