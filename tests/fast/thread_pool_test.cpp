@@ -32,6 +32,23 @@ TEST(ThreadPool, RunsEveryItemOnceOnAThreadOfThePool) {
   }
 }
 
+// Jobs back to back, each its own function: every item runs that job's function, and what an
+// item writes (plain writes) is there when the job returns. A thread that took the next job's
+// items with the last one's function, or a job that ended before its items, shows here.
+TEST(ThreadPool, BackToBackJobsRunTheirOwnFunctions) {
+  for (int threads : {2, 3}) {
+    ThreadPool pool(threads);
+    for (int job = 0; job < 3000; ++job) {
+      const int count = 1 + job % 37;
+      std::vector<int> written(std::size_t(count), -1);
+      pool.run(count, [&written, job](int item, int) { written[std::size_t(item)] = job * 64 + item; });
+      for (int i = 0; i < count; ++i) {
+        ASSERT_EQ(written[std::size_t(i)], job * 64 + i) << threads << " threads, job " << job << ", item " << i;
+      }
+    }
+  }
+}
+
 // Thread w's share is items [count w / threads, count (w + 1) / threads), taken from the
 // front: with every thread held at its first item until all have one, each thread's first
 // item is the first of its share.
