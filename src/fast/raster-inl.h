@@ -700,12 +700,14 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   }
   for (int j = 0, y = gy0; y <= t.y1; y += kRows, ++j) {
     const RowSpan row = spans ? row_spans[j] : RowSpan{0, blocks - 1};
-    VD e[kRows][3];
+    // The top row's edge values carried from block to block, the others' made from them
+    // (exact integers in doubles): fewer vectors live across the loop, which AVX2's sixteen
+    // registers otherwise spill.
+    VD top[3];
     #pragma GCC unroll 4
     for (int k = 0; k < 3; ++k) {
       const std::int64_t at_first = row_start[k] + span.step[k] * (row.first * lanes);
-      #pragma GCC unroll 4
-      for (int r = 0; r < kRows; ++r) e[r][k] = hn::Add(hn::Set(dd, double(at_first + row_step[k] * r)), lane_step[k]);
+      top[k] = hn::Add(hn::Set(dd, double(at_first)), lane_step[k]);
       row_start[k] += row_step[k] * kRows;
     }
     float* const row_bounds = bounds ? bounds + ((y - ws.bound.y0) / kRows) * blocks_per_row : nullptr;
@@ -714,13 +716,17 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
       float* const bound = row_bounds ? row_bounds + (x - ws.bound.x0) / lanes : nullptr;
       // Not `*bound > reject`: a bound or a depth that is not a number hides nothing.
       if (!bound || !(*bound <= reject)) {
+        VD e[kRows][3];
+        #pragma GCC unroll 4
+        for (int k = 0; k < 3; ++k) {
+          e[0][k] = top[k];
+          #pragma GCC unroll 4
+          for (int r = 1; r < kRows; ++r) e[r][k] = hn::Add(top[k], hn::Set(dd, double(row_step[k] * r)));
+        }
         block<kPath, kKernel, kCoverage>(job, t, planes, ws, counts, x, y, interior, box, quad, e, thr, upper, bound);
       }
       #pragma GCC unroll 4
-      for (int r = 0; r < kRows; ++r) {
-        #pragma GCC unroll 4
-        for (int k = 0; k < 3; ++k) e[r][k] = hn::Add(e[r][k], group_step[k]);
-      }
+      for (int k = 0; k < 3; ++k) top[k] = hn::Add(top[k], group_step[k]);
     }
   }
   ws.stats.fragments += counts.fragments;
