@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "shadelab/pipeline.hpp"
+#include "support/sanitizers.hpp"
 
 namespace shadelab::test {
 
@@ -17,19 +18,7 @@ namespace shadelab::test {
 /// ThreadSanitizer build. That run is there for the threads' synchronization, which the first
 /// cases exercise as well as the rest, at some twenty times the cost of a plain run; every
 /// case still runs in the plain and the AddressSanitizer builds.
-constexpr unsigned random_cases(unsigned n) {
-#if defined(__SANITIZE_THREAD__)
-  return (n + 3) / 4;
-#elif defined(__has_feature)
-#if __has_feature(thread_sanitizer)
-  return (n + 3) / 4;
-#else
-  return n;
-#endif
-#else
-  return n;
-#endif
-}
+constexpr unsigned random_cases(unsigned n) { return kThreadSanitizer ? (n + 3) / 4 : n; }
 
 /// One draw_triangles call and everything its spans point into.
 struct RandomDraw {

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "shadelab/image.hpp"
+#include "support/sanitizers.hpp"
 #include "support/test_support.hpp"
 
 namespace shadelab {
@@ -357,17 +358,7 @@ bool send_text(int fd, const std::string& s) {
 
 // Latency bounds of the load test: generous, and ten times more in a sanitized build.
 double latency_scale() {
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-  return 10.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-  return 10.0;
-#else
-  return 1.0;
-#endif
-#else
-  return 1.0;
-#endif
+  return test::kAddressSanitizer || test::kThreadSanitizer ? 10.0 : 1.0;
 }
 
 // A class on one lab: 200 connections at once, of which 32 idle (connected, nothing sent),
