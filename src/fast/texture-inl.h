@@ -115,8 +115,10 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
     d = hn::IfThenElse(hn::RebindMask(db, border), hn::Set(db, tp.border_depth), d);
     return depth_texels(tp, d, ref, out);
   }
-  const auto words = hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
   const bool any_border = !hn::AllFalse(di, border);
+  const auto words = any_border && hn::AllTrue(di, border)
+                         ? hn::Zero(du)
+                         : hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
     out[c] = channel(words, c);
@@ -128,10 +130,11 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
 /// The RGBA8 words at wrapped indices i0 and i1 of each lane's row (whose first texel is
-/// `row`); lanes marked in `border0` or `border1` read the level's first texel there (the
-/// caller puts the border in). Where every lane's two texels are neighbours in memory (inside
-/// the level, not wrapped: all but the lanes within half a texel of a wrapped or clamped edge),
-/// each lane's pair is read as one 64-bit word, half the loads of two gathers.
+/// `row`); lanes marked in `border0` or `border1` read the level's first texel there, and a
+/// tap whose every lane is marked reads nothing (the caller puts the border in). Where every
+/// lane's two texels are neighbours in memory (inside the level, not wrapped: all but the
+/// lanes within half a texel of a wrapped or clamped edge), each lane's pair is read as one
+/// 64-bit word, half the loads of two gathers.
 HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB> i0, hn::Mask<DIB> border0,
                             hn::Vec<DIB> i1, hn::Mask<DIB> border1, hn::Vec<DUB>& w0, hn::Vec<DUB>& w1) {
   const DUB du;
@@ -154,8 +157,10 @@ HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB
   } else
 #endif
   {
-    w0 = hn::GatherIndex(du, words, index0);
-    w1 = hn::GatherIndex(du, words, hn::IfThenZeroElse(border1, hn::Add(row, i1)));
+    // A tap whose every lane is in the border reads nothing (GL_CLAMP's and
+    // GL_CLAMP_TO_BORDER's outside).
+    w0 = hn::AllTrue(DIB(), border0) ? hn::Zero(du) : hn::GatherIndex(du, words, index0);
+    w1 = hn::AllTrue(DIB(), border1) ? hn::Zero(du) : hn::GatherIndex(du, words, hn::IfThenZeroElse(border1, hn::Add(row, i1)));
   }
 }
 
@@ -189,11 +194,21 @@ HWY_INLINE void bilinear_slice(const TexturePlan& tp, const TextureLevel& l, hn:
   const auto width = hn::Set(di, l.width);
   const auto b00 = hn::Or(hn::Or(bi0, bj0), bk), b10 = hn::Or(hn::Or(bi1, bj0), bk);
   const auto b01 = hn::Or(hn::Or(bi0, bj1), bk), b11 = hn::Or(hn::Or(bi1, bj1), bk);
+  const DB db;
+  if (hn::AllTrue(di, hn::And(hn::And(b00, b10), hn::And(b01, b11)))) {
+    // Every lane's four texels are the border (GL_CLAMP_TO_BORDER's outside; GL_CLAMP's always
+    // takes an edge texel too): the same lerps of the border colour, nothing read.
+    #pragma GCC unroll 4
+    for (int c = 0; c < 4; ++c) {
+      const VB border = hn::Set(db, tp.border[c]);
+      out[c] = lerp(lerp(border, border, a), lerp(border, border, a), b);
+    }
+    return;
+  }
   hn::Vec<DUB> w00, w10, w01, w11;
   texel_words(l, hn::Mul(j0, width), i0, b00, i1, b10, w00, w10);
   texel_words(l, hn::Mul(j1, width), i0, b01, i1, b11, w01, w11);
   const bool any_border = !hn::AllFalse(di, hn::Or(hn::Or(b00, b10), hn::Or(b01, b11)));
-  const DB db;
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
     VB t00 = channel(w00, c), t10 = channel(w10, c), t01 = channel(w01, c), t11 = channel(w11, c);

@@ -456,6 +456,12 @@ class RandomDraws {
     t->mag_filter = chance(0.5) ? TextureFilter::kNearest : TextureFilter::kLinear;
     env_color_ = color();  // ShadeState's, given with the texture
     t->border_color = {texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1), texture_uniform(0, 1)};
+    // GL 1.3's and 1.4's wrap modes (the second stream's): the border alone outside the texture
+    // (GL_CLAMP_TO_BORDER, whose blocks wholly in the border the SIMD sampler draws without
+    // reading texels) and mirrored repeats.
+    for (TextureWrap* wrap : {&t->wrap_s, &t->wrap_t}) {
+      if (texture_chance(0.25)) *wrap = texture_chance(0.5) ? TextureWrap::kClampToBorder : TextureWrap::kMirroredRepeat;
+    }
     return t;
   }
 
