@@ -71,17 +71,17 @@ struct VaryingLayout {
 
 /// The SIMD block loop a draw's triangles wholly inside the framebuffer take (raster-inl.h):
 /// the general one, which reads the fragment state at every block, or one compiled for the
-/// usual state, with nothing left to decide per block (no fog, scissor, stipple, alpha test
-/// or logic op): the depth test kLess or kLequal writing depth (kOpaqueLess...), or no depth
-/// test (kOpaque, kBlend: 2D drawing), every colour channel written, flat or Gouraud colours,
-/// and the colour either replacing what is there (kOpaque...) or blended over it by its alpha
-/// (kBlend...: glBlendFunc GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel with
-/// GL_FUNC_ADD, BlendState::source_over). kTextured: one texture unit (DrawPlan::texture_unit),
-/// any filter and environment but GL_COMBINE, any depth test, alpha test and blend, without
-/// fog, stencil, logic op, per-pixel lighting or masks; these it reads per block. kStencil:
-/// the stencil test with any function and operations, any depth test, flat or Gouraud colours
-/// opaque or blended as kBlend, every colour channel written or none, without texture, fog,
-/// alpha test, logic op, per-pixel lighting or masks.
+/// usual state, with nothing left to decide per block but fog (no scissor, stipple, alpha
+/// test or logic op): the depth test kLess or kLequal writing depth (kOpaqueLess...), or no
+/// depth test (kOpaque, kBlend: 2D drawing), every colour channel written, flat or Gouraud
+/// colours, and the colour either replacing what is there (kOpaque...) or blended over it by
+/// its alpha (kBlend...: glBlendFunc GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA for every channel
+/// with GL_FUNC_ADD, BlendState::source_over). kTextured: one texture unit
+/// (DrawPlan::texture_unit), any filter and environment but GL_COMBINE, any depth test, alpha
+/// test, fog and blend, without stencil, logic op, per-pixel lighting or masks; these it reads
+/// per block. kStencil: the stencil test with any function and operations, any depth test,
+/// flat or Gouraud colours opaque or blended as kBlend, every colour channel written or none,
+/// fogged or not, without texture, alpha test, logic op, per-pixel lighting or masks.
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
                                         kTextured, kStencil };
 
@@ -170,7 +170,7 @@ struct DrawPlan {
   int texture_unit = 0;  ///< kTextured's unit
   /// kTextured writes its unit's filtered bytes as the colour (and alpha-tests their alpha
   /// byte): GL_REPLACE of an RGBA texture filtered by the 8-bit sampler, without blending
-  /// (byte b is b / 255 in the float chain, which packs it back to b).
+  /// or fog (byte b is b / 255 in the float chain, which packs it back to b).
   bool texel_bytes = false;
   LightingSetup lighting;
 };

@@ -40,11 +40,11 @@ bool writes_color(const FragmentState& f) {
 void copy_slot(const float* from, float* to, int n) { std::copy(from, from + n, to); }
 
 // The kTextured kernel's draws: one unit textured, its environment not GL_COMBINE, every
-// channel written, nothing but the depth and alpha tests and the blend on.
+// channel written, nothing but fog, the depth and alpha tests and the blend on.
 bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
   int units = 0;
   for (const TexturePlan& tp : p.texture) units += tp.texture ? 1 : 0;
-  return units == 1 && !p.combine && !p.fog && !p.phong && !p.scalar_fragments && !p.lane_masks &&
+  return units == 1 && !p.combine && !p.phong && !p.scalar_fragments && !p.lane_masks &&
          !f.logic_op.enabled && !f.stencil.enabled && !f.alpha_one && f.color_mask[0] && f.color_mask[1] &&
          f.color_mask[2] && f.color_mask[3];
 }
@@ -52,7 +52,7 @@ bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
   if (p.textured) return single_unit_textured(p, f) ? BlockKernel::kTextured : BlockKernel::kGeneral;
-  if (p.fog || p.alpha_test || p.lane_masks || f.logic_op.enabled || f.alpha_one || p.scalar_fragments || p.phong) {
+  if (p.alpha_test || p.lane_masks || f.logic_op.enabled || f.alpha_one || p.scalar_fragments || p.phong) {
     return BlockKernel::kGeneral;
   }
   if (f.stencil.enabled && !p.writes_color) return BlockKernel::kStencil;  // a mask drawn into the stencil buffer
@@ -178,7 +178,7 @@ void make_plan(DrawJob& job) {
   }
   const TexturePlan& unit = p.texture[p.texture_unit];
   p.texel_bytes = p.kernel == BlockKernel::kTextured && unit.eight_bit && unit.env == TextureEnvMode::kReplace &&
-                  unit.format == TextureFormat::kRgba && !frag.blend.enabled;
+                  unit.format == TextureFormat::kRgba && !frag.blend.enabled && !p.fog;
   p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;
   if (!p.phong) color_layout(job, l);

@@ -321,15 +321,20 @@ HWY_INLINE unsigned box_lanes(const TriSetup& t, int x, int y, int lanes) {
 
 // The kernels' colours for the lanes `passed` of a block whose colour rows are `color`: the
 // triangle's one packed colour, the byte planes' (kBlend false: opaque) or source alpha over
-// the framebuffer's (kBlend true).
+// the framebuffer's (kBlend true); fogged, block_color's and write_colors' in float.
 template <bool kBlend>
 HWY_INLINE void kernel_colors(const DrawJob& job, const TriSetup& t, TrianglePlanes& planes, unsigned passed,
                               const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, std::uint32_t* const color[kRows]) {
   if (!planes.ready) set_up_planes(job, t, planes);
-  if constexpr (!kBlend) {  // one colour over the triangle: no weights, no planes
+  if constexpr (!kBlend) {  // one colour over the triangle: no weights, no planes (never fogged)
     if (planes.uniform) return store_rows(DU(), hn::Set(DUB(), planes.uniform_bytes), passed, color);
   }
   const Weights w = perspective_weights(t, b0, b1, f0, f1);
+  if (job.plan.fog) {
+    Rgba c = vertex_color(t, planes, w);
+    apply_fog(job.plan.fog_params, t, planes, w, c);
+    return write_colors(job, c, passed, color);
+  }
   if (planes.exact || planes.has_secondary) return write_colors(job, vertex_color(t, planes, w), passed, color);
   if constexpr (kBlend) {
     const Rgba src = clamped(vertex_color(t, planes, w));
@@ -477,6 +482,7 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
     #pragma GCC unroll 3
     for (int k = 0; k < 3; ++k) c.c[k] = hn::Add(c.c[k], varying(t, planes, w, planes.secondary[k]));
   }
+  if (job.plan.fog) apply_fog(job.plan.fog_params, t, planes, w, c);
   if (job.plan.alpha_test) passed &= alpha_bits(fs.alpha_test, job.plan.alpha_ref, c.c[3]);
   counts.shaded += unsigned(std::popcount(passed));
   if (!passed) {

@@ -531,8 +531,9 @@ TEST(FastDifferential, StencilKernelMatchesTheReference) {
 }
 
 // The kernel make_plan chooses for an untextured stencil-tested draw: kStencil with every
-// colour channel written (opaque or blended by source alpha) or none; the general path for
-// some channels masked, another blend, the alpha test, fog, a logic op or per-pixel lighting.
+// colour channel written (opaque or blended by source alpha) or none, fogged or not; the
+// general path for some channels masked, another blend, the alpha test, a logic op or
+// per-pixel lighting.
 TEST(FastDifferential, TheStencilKernelOnlyWithoutOtherState) {
   auto kernel = [&](auto&& change) {
     FragmentState frag;
@@ -561,7 +562,7 @@ TEST(FastDifferential, TheStencilKernelOnlyWithoutOtherState) {
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.alpha_test = {true, CompareFunc::kGreater, 0.5f}; }),
             BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
-  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kStencil);
   EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) {
               s.lighting = true;
               s.shading = ShadingMode::kPhong;

@@ -38,11 +38,13 @@ TEST(FastFragmentState, EverySimdTargetMatchesTheReference) {
 }
 
 // Each state alone on the SIMD path (no texture, stencil or capture), with enough fragments
-// that every state decides some of them.
+// that every state decides some of them; fogged draws also through the kernels compiled for
+// the usual state (BlockKernel), which take fog.
 TEST(FastFragmentState, EachStateAloneOnTheSimdPath) {
   PipelineContext two(2);
   for (int which = 0; which < 5; ++which) {
     std::uint64_t changed = 0;
+    int kernels = 0;
     for (unsigned seed = 8000; seed < 8040; ++seed) {
       RandomDraws random(seed);
       glm::ivec2 size{random.integer(40, 200), random.integer(30, 150)};
@@ -59,6 +61,7 @@ TEST(FastFragmentState, EachStateAloneOnTheSimdPath) {
         default: d.frag.stipple = extras.frag.stipple, d.frag.stipple.enabled = true; break;
       }
       if (which == 3 && d.shade.shading == ShadingMode::kPhong) d.shade.shading = ShadingMode::kGouraud;
+      kernels += test::planned_kernel(d.frag, d.shade) != fast::BlockKernel::kGeneral;
       Result ref = render(initial, {d}, nullptr);
       Result fast = render(initial, {d}, &two);
       ASSERT_EQ(compare_buffers(fast.fb, ref.fb), "") << "state " << which << " seed " << seed;
@@ -67,6 +70,9 @@ TEST(FastFragmentState, EachStateAloneOnTheSimdPath) {
       changed += ref.stats.pixels_shaded;
     }
     EXPECT_GT(changed, 1000u) << "state " << which;
+    if (which == 0) {
+      EXPECT_GT(kernels, 5) << "fogged draws through a kernel";
+    }
   }
 }
 

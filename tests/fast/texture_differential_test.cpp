@@ -224,6 +224,13 @@ TexturedScene textured_scene(unsigned seed) {
       d.shade.shading = pick(0, 3) == 0 ? ShadingMode::kFlat : ShadingMode::kGouraud;
       if (pick(0, 2) == 0) d.frag.blend = {true, BlendFactor::kSrcAlpha, BlendFactor::kOneMinusSrcAlpha};
       if (pick(0, 3) == 0) d.frag.alpha_test = {true, CompareFunc::kGreater, real(0.2f, 0.8f)};
+      if (pick(0, 3) == 0) {  // fog, after the environments
+        FogState& fog = d.shade.fog;
+        fog.enabled = true;
+        fog.mode = FogMode(pick(0, 2));
+        fog.color = {pick(0, 255) / 255.0f, pick(0, 255) / 255.0f, pick(0, 255) / 255.0f};
+        fog.start = real(-1.0f, 3.0f), fog.end = real(3.0f, 12.0f), fog.density = real(0.05f, 0.6f);
+      }
     }
     scene.draws.push_back(std::move(d));
   }
@@ -254,9 +261,12 @@ std::string identical(const Framebuffer& fast, const Framebuffer& ref) {
 void check_scenes(unsigned first, unsigned last, PipelineContext& context, const std::string& target) {
   const unsigned requested = last - first;
   last = first + test::random_cases(requested);
-  int exact_scenes = 0;
+  int exact_scenes = 0, fogged_kernel = 0;  // fogged draws through the textured kernel
   for (unsigned seed = first; seed < last; ++seed) {
     const TexturedScene scene = textured_scene(seed);
+    for (const test::RandomDraw& d : scene.draws) {
+      fogged_kernel += d.shade.fog.enabled && test::planned_kernel(d.frag, d.shade) == fast::BlockKernel::kTextured;
+    }
     const test::Result ref = test::render(scene.initial, scene.draws, nullptr);
     const test::Result fast = test::render(scene.initial, scene.draws, &context);
     const std::string diff = scene.exact ? identical(fast.fb, ref.fb) : test::compare_buffers(fast.fb, ref.fb);
@@ -267,6 +277,7 @@ void check_scenes(unsigned first, unsigned last, PipelineContext& context, const
   // Over a fifth of the scenes are drawn exactly; of the fewer scenes a ThreadSanitizer build
   // draws, a tenth (a small sample's share varies).
   EXPECT_GT(exact_scenes, int(last - first) / (last - first == requested ? 5 : 10));
+  EXPECT_GT(fogged_kernel, int(last - first) / 20);
 }
 
 TEST(TextureDifferential, TexturedScenesMatchTheReference) {
@@ -407,8 +418,8 @@ Texture grey_2x2() {
 }
 
 // The kernel make_plan chooses for a textured draw: kTextured for one unit whose environment is
-// not GL_COMBINE, with or without the depth test, alpha test and blend (the scenes above draw
-// through it on every target); the general path with a second unit, GL_COMBINE, fog, the
+// not GL_COMBINE, with or without the depth test, alpha test, fog and blend (the scenes above
+// draw through it on every target); the general path with a second unit, GL_COMBINE, the
 // stencil test or a logic op.
 TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
   Texture texture = grey_2x2();
@@ -431,7 +442,7 @@ TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
   EXPECT_EQ(kernel([&](FragmentState&, ShadeState& s) { s.textures[2].texture = &texture; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.textures[0].env = TextureEnvMode::kCombine; }),
             BlockKernel::kGeneral);
-  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kGeneral);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kTextured);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.stencil.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.color_mask[1] = false; }), BlockKernel::kGeneral);
