@@ -162,6 +162,21 @@ HWY_INLINE Weights perspective_weights(const TriSetup& t, const VD b0[kRows], co
   return w;
 }
 
+/// trunc(x) as an integer lane for x known to be within the int32 range (texel coordinates,
+/// levels, weights): x86's truncating conversion itself, without the four operations that
+/// ConvertTo adds for values that overflow.
+HWY_INLINE hn::Vec<DIB> truncate_in_range(VB x) {
+#if HWY_TARGET <= HWY_AVX3
+  return hn::Vec<DIB>{_mm512_cvttps_epi32(x.raw)};
+#elif HWY_TARGET == HWY_AVX2
+  return hn::Vec<DIB>{_mm256_cvttps_epi32(x.raw)};
+#elif HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
+  return hn::Vec<DIB>{_mm_cvttps_epi32(x.raw)};
+#else
+  return hn::ConvertTo(DIB(), x);
+#endif
+}
+
 /// Byte `c` of each RGBA8 word as a float (0 to 255).
 HWY_INLINE VB channel(hn::Vec<DUB> px, int c) {
   const DUB dub;

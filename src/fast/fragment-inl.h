@@ -317,20 +317,8 @@ HWY_INLINE VB blend_factor(BlendFactor f, int c, const Rgba& src, const Rgba& ds
 // fragment_ops.cpp's unit(): v > 0 ? min(v, 1) : 0, so NaN becomes 0.
 HWY_INLINE VB clamp_unit(VB v) { return clamp01(DB(), v); }
 
-/// trunc(t) for t in [0, 256) as an integer lane: the truncating conversion itself, without
-/// the fix-up ConvertTo adds for values that overflow an int32 (four more operations).
-HWY_INLINE hn::Vec<DUB> truncate_byte(VB t) {
-#if HWY_TARGET <= HWY_AVX3
-  const hn::Vec<DIB> i{_mm512_cvttps_epi32(t.raw)};
-#elif HWY_TARGET == HWY_AVX2
-  const hn::Vec<DIB> i{_mm256_cvttps_epi32(t.raw)};
-#elif HWY_TARGET == HWY_SSE4 || HWY_TARGET == HWY_SSSE3
-  const hn::Vec<DIB> i{_mm_cvttps_epi32(t.raw)};
-#else
-  const hn::Vec<DIB> i = hn::ConvertTo(DIB(), t);
-#endif
-  return hn::BitCast(DUB(), i);
-}
+/// trunc(t) for t in [0, 256) as an integer lane.
+HWY_INLINE hn::Vec<DUB> truncate_byte(VB t) { return hn::BitCast(DUB(), truncate_in_range(t)); }
 
 // lround(v * 255) for v in [0, 1] (clamped by the caller) as an integer lane: s = v * 255,
 // then trunc(s + kJustBelowHalf) (draw_job.hpp), which is lround(s) for every float s in

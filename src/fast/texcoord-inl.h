@@ -376,7 +376,7 @@ HWY_INLINE LevelChoice choose_levels(const TexturePlan& tp, const QuadDerivative
     return c;
   }
   const VB floor = hn::Floor(lod);
-  const auto level = hn::Add(base, hn::ConvertTo(di, floor));
+  const auto level = hn::Add(base, truncate_in_range(floor));
   const auto below_last = hn::And(minified_i, hn::Lt(level, last));
   c.lo = hn::IfThenElse(below_last, level, hn::IfThenElse(minified_i, last, base));
   c.hi = hn::IfThenElse(below_last, hn::Add(level, hn::Set(di, 1)), c.lo);

@@ -93,12 +93,24 @@ HWY_INLINE void depth_texels(const TexturePlan& tp, VB d, VB ref, VB out[4]) {
   }
 }
 
+/// Whether every lane of `index` holds `first`, its first lane's.
+HWY_INLINE bool uniform(hn::Vec<DIB> index, std::int32_t first) {
+  return hn::AllTrue(DIB(), hn::Eq(index, hn::Set(DIB(), first)));
+}
+
+/// The RGBA8 words at `index`: one load where every lane reads the same texel (most blocks of
+/// a magnified texture do, and every block wholly in a border, whose lanes read texel 0), a
+/// gather otherwise.
+HWY_INLINE hn::Vec<DUB> gather_words(const std::uint32_t* words, hn::Vec<DIB> index) {
+  const std::int32_t first = hn::GetLane(index);
+  return uniform(index, first) ? hn::Set(DUB(), words[first]) : hn::GatherIndex(DUB(), words, index);
+}
+
 /// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
 /// words; j is ignored by 1D textures, k by 1D and 2D ones.
 HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, hn::Vec<DIB> k,
                       VB out[4], VB ref) {
   const DIB di;
-  const DUB du;
   hn::Mask<DIB> border = hn::FirstN(di, 0);
   i = wrap_index(i, l.width, tp.wrap_s, border);
   if (!tp.one_d) j = wrap_index(j, l.height, tp.wrap_t, border);
@@ -116,9 +128,7 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
     return depth_texels(tp, d, ref, out);
   }
   const bool any_border = !hn::AllFalse(di, border);
-  const auto words = any_border && hn::AllTrue(di, border)
-                         ? hn::Zero(du)
-                         : hn::GatherIndex(du, reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
+  const auto words = gather_words(reinterpret_cast<const std::uint32_t*>(l.rgba.data()), index);
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) {
     out[c] = channel(words, c);
@@ -130,16 +140,23 @@ HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB>
 HWY_INLINE VB lerp(VB a, VB b, VB w) { return hn::Add(a, hn::Mul(w, hn::Sub(b, a))); }
 
 /// The RGBA8 words at wrapped indices i0 and i1 of each lane's row (whose first texel is
-/// `row`); lanes marked in `border0` or `border1` read the level's first texel there, and a
-/// tap whose every lane is marked reads nothing (the caller puts the border in). Where every
-/// lane's two texels are neighbours in memory (inside the level, not wrapped: all but the
-/// lanes within half a texel of a wrapped or clamped edge), each lane's pair is read as one
-/// 64-bit word, half the loads of two gathers.
+/// `row`); lanes marked in `border0` or `border1` read the level's first texel there (the
+/// caller puts the border in). Where every lane reads the same two texels (most blocks of a
+/// magnified texture, and blocks wholly in a border) they are two loads; where every lane's two
+/// texels are neighbours in memory (inside the level, not wrapped: all but the lanes within
+/// half a texel of a wrapped or clamped edge), each lane's pair is read as one 64-bit word,
+/// half the loads of two gathers.
 HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB> i0, hn::Mask<DIB> border0,
                             hn::Vec<DIB> i1, hn::Mask<DIB> border1, hn::Vec<DUB>& w0, hn::Vec<DUB>& w1) {
   const DUB du;
   const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
   const auto index0 = hn::IfThenZeroElse(border0, hn::Add(row, i0));
+  const auto index1 = hn::IfThenZeroElse(border1, hn::Add(row, i1));
+  const std::int32_t first0 = hn::GetLane(index0), first1 = hn::GetLane(index1);
+  if (uniform(index0, first0) && uniform(index1, first1)) {
+    w0 = hn::Set(du, words[first0]), w1 = hn::Set(du, words[first1]);
+    return;
+  }
 #if HWY_TARGET != HWY_SCALAR
   const DIB di;
   const auto pairs = hn::AndNot(hn::Or(border0, border1), hn::Eq(i1, hn::Add(i0, hn::Set(di, 1))));
@@ -154,14 +171,11 @@ HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB
     const auto hi = hn::GatherOffset(dq, quads, hn::ShiftLeft<2>(hn::PromoteTo(dqi, hn::UpperHalf(dh, index0))));
     w0 = hn::ConcatEven(du, hn::BitCast(du, hi), hn::BitCast(du, lo));
     w1 = hn::ConcatOdd(du, hn::BitCast(du, hi), hn::BitCast(du, lo));
-  } else
-#endif
-  {
-    // A tap whose every lane is in the border reads nothing (GL_CLAMP's and
-    // GL_CLAMP_TO_BORDER's outside).
-    w0 = hn::AllTrue(DIB(), border0) ? hn::Zero(du) : hn::GatherIndex(du, words, index0);
-    w1 = hn::AllTrue(DIB(), border1) ? hn::Zero(du) : hn::GatherIndex(du, words, hn::IfThenZeroElse(border1, hn::Add(row, i1)));
+    return;
   }
+#endif
+  w0 = gather_words(words, index0);
+  w1 = gather_words(words, index1);
 }
 
 /// The reference's bilinear slice of a 2D, cube or 3D colour level at texels (i, j) to
@@ -241,14 +255,14 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   const VB v = tp.one_d ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
   const VB w = tp.three_d ? texel_coord(r, l.depth, tp.wrap_r) : hn::Zero(db);
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  hn::Vec<DIB> i, j, k = tp.cube ? hn::ConvertTo(di, r) : hn::Zero(di);  // a cube map's r: the face
+  hn::Vec<DIB> i, j, k = tp.cube ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
   if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
-    i = hn::ConvertTo(di, hn::Floor(u));
-    j = tp.one_d ? hn::Zero(di) : hn::ConvertTo(di, hn::Floor(v));
+    i = truncate_in_range(hn::Floor(u));
+    j = tp.one_d ? hn::Zero(di) : truncate_in_range(hn::Floor(v));
     if (keeps_nearest_in_level(tp.wrap_s)) i = hn::Min(i, hn::Set(di, l.width - 1));
     if (keeps_nearest_in_level(tp.wrap_t)) j = hn::Min(j, hn::Set(di, l.height - 1));
     if (tp.three_d) {
-      k = hn::ConvertTo(di, hn::Floor(w));
+      k = truncate_in_range(hn::Floor(w));
       if (keeps_nearest_in_level(tp.wrap_r)) k = hn::Min(k, hn::Set(di, l.depth - 1));
     }
   }
@@ -256,9 +270,9 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
   const VB fu = hn::Floor(uu), fv = hn::Floor(vv);
   const auto li = hn::RebindMask(di, linear);
-  i = all_linear ? hn::ConvertTo(di, fu) : hn::IfThenElse(li, hn::ConvertTo(di, fu), i);
+  i = all_linear ? truncate_in_range(fu) : hn::IfThenElse(li, truncate_in_range(fu), i);
   if (tp.one_d) j = hn::Zero(di);  // 1D: one row, whatever the filter
-  else j = all_linear ? hn::ConvertTo(di, fv) : hn::IfThenElse(li, hn::ConvertTo(di, fv), j);
+  else j = all_linear ? truncate_in_range(fv) : hn::IfThenElse(li, truncate_in_range(fv), j);
   const VB a = hn::IfThenElseZero(linear, hn::Sub(uu, fu)), b = hn::IfThenElseZero(linear, hn::Sub(vv, fv));
   const auto one = hn::Set(di, 1);
   if (tp.one_d) {
@@ -271,7 +285,7 @@ HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r,
   }
   if (!tp.three_d) return bilinear_slice(tp, l, i, j, k, a, b, r, out);
   const VB ww = hn::Sub(w, hn::Set(db, 0.5f)), fw = hn::Floor(ww);
-  k = all_linear ? hn::ConvertTo(di, fw) : hn::IfThenElse(li, hn::ConvertTo(di, fw), k);
+  k = all_linear ? truncate_in_range(fw) : hn::IfThenElse(li, truncate_in_range(fw), k);
   const VB cw = hn::IfThenElseZero(linear, hn::Sub(ww, fw));
   VB near[4], far[4];
   bilinear_slice(tp, l, i, j, k, a, b, r, near);
@@ -432,7 +446,7 @@ HWY_INLINE Bytes8 bilinear_bytes(const TexturePlan& tp, const TextureLevel& l, h
 HWY_INLINE hn::Vec<DIB> nearest_index(VB c, int size, TextureWrap wrap) {
   const DIB di;
   hn::Mask<DIB> unused = hn::FirstN(di, 0);
-  const auto i = hn::ConvertTo(di, hn::Floor(texel_coord(c, size, wrap)));
+  const auto i = truncate_in_range(hn::Floor(texel_coord(c, size, wrap)));
   return wrap_index(keeps_nearest_in_level(wrap) ? hn::Min(i, hn::Set(di, size - 1)) : i, size, wrap, unused);
 }
 
@@ -445,7 +459,7 @@ HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB 
   const DUB du;
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  const auto face = tp.cube ? hn::ConvertTo(di, r) : hn::Zero(di);  // a cube map's r: the face
+  const auto face = tp.cube ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
   Bytes8 nearest;
   if (!all_linear) {  // sample_level's nearest index, wrapped as fetch wraps it
     const auto i = nearest_index(s, l.width, tp.wrap_s);
@@ -453,7 +467,7 @@ HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB 
     if (tp.three_d) row = hn::Add(hn::Mul(nearest_index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
     else if (tp.cube) row = hn::Add(hn::Mul(face, hn::Set(di, l.height)), row);
     const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
-    nearest = unpack8(hn::GatherIndex(du, words, hn::Add(hn::Mul(row, hn::Set(di, l.width)), i)));
+    nearest = unpack8(gather_words(words, hn::Add(hn::Mul(row, hn::Set(di, l.width)), i)));
     if (!any_linear) return nearest;
   }
   hn::Vec<DIB> i0, i1, wi, j0 = hn::Zero(di), j1 = j0, wj = j0;
@@ -492,7 +506,7 @@ HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const Qu
     hi = level == first ? texel : select8(hn::RebindMask(du, is_hi), texel, hi);
   }
   if (!c.two_levels) return lo;
-  return lerp8(lo, hi, weight8(hn::ConvertTo(di, hn::Mul(c.frac, hn::Set(db, 256.0f)))));
+  return lerp8(lo, hi, weight8(truncate_in_range(hn::Mul(c.frac, hn::Set(db, 256.0f)))));
 }
 
 /// The filtered texel of every `live` lane in [0, 1] (sample_texture): the levels each lane
