@@ -79,11 +79,15 @@ struct VaryingLayout {
 /// with GL_FUNC_ADD, BlendState::source_over). kTextured: one texture unit
 /// (DrawPlan::texture_unit), any filter and environment but GL_COMBINE, any depth test, alpha
 /// test, fog and blend, without stencil, logic op, per-pixel lighting or masks; these it reads
-/// per block. kStencil: the stencil test with any function and operations, any depth test,
+/// per block. kTextured2D: kTextured's draws whose texture is a 2D colour texture (not 1D, 3D,
+/// a cube map or a depth texture), with a sampler compiled for that shape alone. kStencil: the stencil test with any function and operations, any depth test,
 /// flat or Gouraud colours opaque or blended as kBlend, every colour channel written or none,
 /// fogged or not, without texture, alpha test, logic op, per-pixel lighting or masks.
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
-                                        kTextured, kStencil };
+                                        kTextured, kTextured2D, kStencil };
+
+/// Whether a kernel is one of the textured ones (kTextured, kTextured2D).
+constexpr bool kernel_textured(BlockKernel k) { return k == BlockKernel::kTextured || k == BlockKernel::kTextured2D; }
 
 /// Whether a kernel is one of the untextured ones that test depth (GL_LESS or GL_LEQUAL,
 /// writing it); kOpaque and kBlend draw without the depth test.
@@ -167,7 +171,7 @@ struct DrawPlan {
   int user_plane_count = 0;
   bool coverage = false;         ///< smooth lines or points: alpha times their coverage
   BlockKernel kernel = BlockKernel::kGeneral;
-  int texture_unit = 0;  ///< kTextured's unit
+  int texture_unit = 0;  ///< the textured kernels' unit
   /// kTextured writes its unit's filtered bytes as the colour (and alpha-tests their alpha
   /// byte): GL_REPLACE of an RGBA texture filtered by the 8-bit sampler, without blending
   /// or fog (byte b is b / 255 in the float chain, which packs it back to b).

@@ -51,7 +51,12 @@ bool single_unit_textured(const DrawPlan& p, const FragmentState& f) {
 
 BlockKernel kernel_for(const DrawPlan& p, const FragmentState& f) {
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
-  if (p.textured) return single_unit_textured(p, f) ? BlockKernel::kTextured : BlockKernel::kGeneral;
+  if (p.textured) {
+    if (!single_unit_textured(p, f)) return BlockKernel::kGeneral;
+    const TexturePlan& tp = *std::find_if(p.texture, p.texture + kMaxTextureUnits,
+                                          [](const TexturePlan& u) { return u.texture != nullptr; });
+    return tp.one_d || tp.three_d || tp.cube || tp.depth_texture ? BlockKernel::kTextured : BlockKernel::kTextured2D;
+  }
   if (p.alpha_test || p.lane_masks || f.logic_op.enabled || f.alpha_one || p.scalar_fragments || p.phong) {
     return BlockKernel::kGeneral;
   }
@@ -177,7 +182,7 @@ void make_plan(DrawJob& job) {
     if (p.texture[u].texture) p.texture_unit = u;
   }
   const TexturePlan& unit = p.texture[p.texture_unit];
-  p.texel_bytes = p.kernel == BlockKernel::kTextured && unit.eight_bit && unit.env == TextureEnvMode::kReplace &&
+  p.texel_bytes = kernel_textured(p.kernel) && unit.eight_bit && unit.env == TextureEnvMode::kReplace &&
                   unit.format == TextureFormat::kRgba && !frag.blend.enabled && !p.fog;
   p.user_plane_count = detail::clip_space_planes(frag.clip, job.projection, p.user_planes);
   VaryingLayout l;

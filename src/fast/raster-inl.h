@@ -421,11 +421,12 @@ HWY_INLINE void textured_depth(const FragmentState& fs, VB z, VB stored, unsigne
   if (bound) *bound = hn::GetLane(hn::MaxOfLanes(DB(), stored));
 }
 
-// A block of a triangle wholly inside the framebuffer by the kTextured kernel: simd_block's
-// operations for its state (the depth test first, the colours of the lanes it passes, the
-// alpha test, then depth and colour written), block_color's for one unit. `bound`, when not
-// null, is the block's depth bound (block_bounds): set to the largest depth the block holds
-// after it is drawn.
+// A block of a triangle wholly inside the framebuffer by a textured kernel (k2D: kTextured2D,
+// its sampler compiled for 2D colour textures alone): simd_block's operations for its state
+// (the depth test first, the colours of the lanes it passes, the alpha test, then depth and
+// colour written), block_color's for one unit. `bound`, when not null, is the block's depth
+// bound (block_bounds): set to the largest depth the block holds after it is drawn.
+template <bool k2D>
 HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const PixelTarget& target, TrianglePlanes& planes,
                                GroupCounts& counts, int x, int y, unsigned bits, const VD e[kRows][3],
                                const VD b0[kRows], const VD b1[kRows], VB f0, VB f1, VB z, float* bound) {
@@ -455,7 +456,7 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
   const int unit = job.plan.texture_unit;
   const TexturePlan& tp = job.plan.texture[unit];
   if (job.plan.texel_bytes && !planes.has_secondary) {  // the filtered bytes are the colours
-    const hn::Vec<DUB> words = sample_block_words(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed));
+    const hn::Vec<DUB> words = sample_block_words<k2D>(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed));
     if (job.plan.alpha_test) {
       const VB alpha = hn::ConvertTo(DB(), hn::BitCast(DIB(), hn::ShiftRight<24>(words)));
       passed &= alpha_byte_bits(fs.alpha_test, job.plan.alpha_ref, alpha);
@@ -475,7 +476,7 @@ HWY_INLINE void textured_block(const DrawJob& job, const TriSetup& t, const Pixe
   Rgba c = vertex_color(t, planes, w, false);
   if (exact && !t.flat) exact_color(t, planes, w, 3, c, false);
   VB texel[4];
-  sample_block(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed), texel);
+  sample_block<k2D>(job, unit, t, planes.texcoord[unit], w, x, y, e, block_mask(passed), texel);
   texture_env(tp, c.c, texel);
   c.clamped = false;
   if (planes.has_secondary) {
@@ -569,8 +570,8 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
     for (int r = 0; r < kRows; ++r) {
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
-  } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kTextured) {
-    textured_block(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
+  } else if constexpr (kPath == Path::kInterior && kernel_textured(kKernel)) {
+    textured_block<kKernel == BlockKernel::kTextured2D>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
   } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kStencil) {
     stencil_block(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
@@ -674,7 +675,7 @@ void raster_path(const DrawJob& job, const TriSetup& t, WorkerScratch& ws, bool 
   // The depth-testing and textured kernels skip the blocks their bounds show hidden
   // (block_bounds), for triangles of kBoundedBlocksArea pixels and more.
   float reject = 0.0f;
-  const bool bounded = kKernel == BlockKernel::kTextured || kernel_tests_depth(kKernel);
+  const bool bounded = kernel_textured(kKernel) || kernel_tests_depth(kKernel);
   float* const bounds =
       bounded && box_pixels(t) >= kBoundedBlocksArea ? block_bounds(job, t, ws, reject) : nullptr;
   const int blocks_per_row = kTileSize / lanes;

@@ -76,13 +76,14 @@ void raster_kernel(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   }
 }
 
-// A triangle drawn by the textured kernel: hidden behind its tile's depth bound (alpha-tested
+// A triangle drawn by a textured kernel: hidden behind its tile's depth bound (alpha-tested
 // layers drawn front to back), or drawn.
+template <BlockKernel kKernel>
 void raster_textured(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
   const FragmentState& f = *job.frag;
   const bool less = f.depth_func == CompareFunc::kLess, lequal = f.depth_func == CompareFunc::kLequal;
   if (f.depth_test && (less || lequal) && behind_tile(job, t, ws, lequal)) return;
-  raster_path<Path::kInterior, BlockKernel::kTextured>(job, t, ws, true);
+  raster_path<Path::kInterior, kKernel>(job, t, ws, true);
   depth_written(job, ws);
 }
 
@@ -100,7 +101,8 @@ void raster_triangle(const DrawJob& job, const TriSetup& t, WorkerScratch& ws) {
       case BlockKernel::kBlendLequal: return raster_kernel<BlockKernel::kBlendLequal>(job, t, ws);
       case BlockKernel::kOpaque: return raster_kernel<BlockKernel::kOpaque>(job, t, ws);
       case BlockKernel::kBlend: return raster_kernel<BlockKernel::kBlend>(job, t, ws);
-      case BlockKernel::kTextured: return raster_textured(job, t, ws);
+      case BlockKernel::kTextured: return raster_textured<BlockKernel::kTextured>(job, t, ws);
+      case BlockKernel::kTextured2D: return raster_textured<BlockKernel::kTextured2D>(job, t, ws);
       case BlockKernel::kStencil:
         raster_path<Path::kInterior, BlockKernel::kStencil>(job, t, ws, true);
         return depth_written(job, ws);

@@ -23,6 +23,18 @@ HWY_BEFORE_NAMESPACE();
 namespace shadelab::fast::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// A sampler compiled for one shape of texture: with k2D a 2D colour texture (not 1D, 3D, a
+// cube map or a depth texture; the shape nearly every program samples), the other shapes'
+// branches compiled out; without, the shape read from the plan.
+template <bool k2D>
+HWY_INLINE bool is_1d(const TexturePlan& tp) { return !k2D && tp.one_d; }
+template <bool k2D>
+HWY_INLINE bool is_3d(const TexturePlan& tp) { return !k2D && tp.three_d; }
+template <bool k2D>
+HWY_INLINE bool is_cube(const TexturePlan& tp) { return !k2D && tp.cube; }
+template <bool k2D>
+HWY_INLINE bool is_depth(const TexturePlan& tp) { return !k2D && tp.depth_texture; }
+
 /// A triangle's texture coordinates s, t, q and r (r sampled by 3D textures only): value at
 /// vertex 2 and the differences from it to vertices 0 and 1 (texcoord.hpp's texcoord_plane).
 /// `unit_q`: q is 1 at every vertex, so its plane is 1 wherever the weights are finite.
@@ -293,18 +305,19 @@ HWY_INLINE VB cube_rho2(const TexturePlan& tp, const QuadDerivatives& d) {
 }
 
 /// texture_rho2: the larger squared length of the x and y differences in the base level's texels.
+template <bool k2D = false>
 HWY_INLINE VB rho2(const TexturePlan& tp, const QuadDerivatives& d) {
   const DB db;
-  if (tp.cube) return cube_rho2(tp, d);
+  if (is_cube<k2D>(tp)) return cube_rho2(tp, d);
   const VB w = hn::Set(db, tp.width), h = hn::Set(db, tp.height);
   const VB sx = hn::Mul(d.ds_dx, w), sy = hn::Mul(d.ds_dy, w);
-  if (tp.one_d) {
+  if (is_1d<k2D>(tp)) {
     const VB a = hn::Mul(sx, sx), b = hn::Mul(sy, sy);
     return hn::IfThenElse(hn::Lt(a, b), b, a);
   }
   const VB tx = hn::Mul(d.dt_dx, h), ty = hn::Mul(d.dt_dy, h);
   VB a = hn::Add(hn::Mul(sx, sx), hn::Mul(tx, tx)), b = hn::Add(hn::Mul(sy, sy), hn::Mul(ty, ty));
-  if (tp.three_d) {  // the r terms added last, as lp_build_rho
+  if (is_3d<k2D>(tp)) {  // the r terms added last, as lp_build_rho
     const VB depth = hn::Set(db, tp.depth), rx = hn::Mul(d.dr_dx, depth), ry = hn::Mul(d.dr_dy, depth);
     a = hn::Add(a, hn::Mul(rx, rx));
     b = hn::Add(b, hn::Mul(ry, ry));
@@ -338,10 +351,11 @@ struct LevelChoice {
 
 HWY_INLINE MB filter_mask(bool linear) { return linear ? hn::FirstN(DB(), hn::Lanes(DB())) : hn::FirstN(DB(), 0); }
 
+template <bool k2D = false>
 HWY_INLINE LevelChoice choose_levels(const TexturePlan& tp, const QuadDerivatives& d) {
   const DB db;
   const DIB di;
-  const VB r2 = rho2(tp, d);
+  const VB r2 = rho2<k2D>(tp, d);
   LevelChoice c;
   c.lo = c.hi = hn::Set(di, tp.base_level);
   c.frac = hn::Zero(db);

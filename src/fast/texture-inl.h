@@ -108,20 +108,21 @@ HWY_INLINE hn::Vec<DUB> gather_words(const std::uint32_t* words, hn::Vec<DIB> in
 
 /// Texels (i, j, k) of a level in byte units (texture.cpp's texel), gathered from its RGBA8
 /// words; j is ignored by 1D textures, k by 1D and 2D ones.
+template <bool k2D = false>
 HWY_INLINE void fetch(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j, hn::Vec<DIB> k,
                       VB out[4], VB ref) {
   const DIB di;
   hn::Mask<DIB> border = hn::FirstN(di, 0);
   i = wrap_index(i, l.width, tp.wrap_s, border);
-  if (!tp.one_d) j = wrap_index(j, l.height, tp.wrap_t, border);
-  if (tp.three_d) {
+  if (!is_1d<k2D>(tp)) j = wrap_index(j, l.height, tp.wrap_t, border);
+  if (is_3d<k2D>(tp)) {
     k = wrap_index(k, l.depth, tp.wrap_r, border);
     j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
-  } else if (tp.cube) {  // k: the face's image
+  } else if (is_cube<k2D>(tp)) {  // k: the face's image
     j = hn::Add(hn::Mul(k, hn::Set(di, l.height)), j);
   }
   const auto index = hn::IfThenZeroElse(border, hn::Add(hn::Mul(j, hn::Set(di, l.width)), i));
-  if (tp.depth_texture) {  // the border's depth: the border colour's red
+  if (is_depth<k2D>(tp)) {  // the border's depth: the border colour's red
     const DB db;
     VB d = hn::GatherIndex(db, l.depth_values.data(), index);
     d = hn::IfThenElse(hn::RebindMask(db, border), hn::Set(db, tp.border_depth), d);
@@ -181,16 +182,17 @@ HWY_INLINE void texel_words(const TextureLevel& l, hn::Vec<DIB> row, hn::Vec<DIB
 /// The reference's bilinear slice of a 2D, cube or 3D colour level at texels (i, j) to
 /// (i + 1, j + 1) of image k, weighted by a across and b down: fetch's texels, each index
 /// wrapped once (a depth texture's compared with `ref` by fetch).
+template <bool k2D = false>
 HWY_INLINE void bilinear_slice(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> i, hn::Vec<DIB> j,
                                hn::Vec<DIB> k, VB a, VB b, VB ref, VB out[4]) {
   const DIB di;
   const auto one = hn::Set(di, 1);
-  if (tp.depth_texture) {  // depth comparisons per texel: fetch's
+  if (is_depth<k2D>(tp)) {  // depth comparisons per texel: fetch's
     VB t00[4], t10[4], t01[4], t11[4];
-    fetch(tp, l, i, j, k, t00, ref);
-    fetch(tp, l, hn::Add(i, one), j, k, t10, ref);
-    fetch(tp, l, i, hn::Add(j, one), k, t01, ref);
-    fetch(tp, l, hn::Add(i, one), hn::Add(j, one), k, t11, ref);
+    fetch<k2D>(tp, l, i, j, k, t00, ref);
+    fetch<k2D>(tp, l, hn::Add(i, one), j, k, t10, ref);
+    fetch<k2D>(tp, l, i, hn::Add(j, one), k, t01, ref);
+    fetch<k2D>(tp, l, hn::Add(i, one), hn::Add(j, one), k, t11, ref);
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out[c] = lerp(lerp(t00[c], t10[c], a), lerp(t01[c], t11[c], a), b);
     return;
@@ -199,8 +201,8 @@ HWY_INLINE void bilinear_slice(const TexturePlan& tp, const TextureLevel& l, hn:
   hn::Mask<DIB> bi0 = none, bi1 = none, bj0 = none, bj1 = none, bk = none;
   const auto i0 = wrap_index(i, l.width, tp.wrap_s, bi0), i1 = wrap_index(hn::Add(i, one), l.width, tp.wrap_s, bi1);
   auto j0 = wrap_index(j, l.height, tp.wrap_t, bj0), j1 = wrap_index(hn::Add(j, one), l.height, tp.wrap_t, bj1);
-  if (tp.three_d || tp.cube) {  // k: a 3D level's image (wrapped), a cube map's face
-    const auto image = hn::Mul(tp.three_d ? wrap_index(k, l.depth, tp.wrap_r, bk) : k, hn::Set(di, l.height));
+  if (is_3d<k2D>(tp) || is_cube<k2D>(tp)) {  // k: a 3D level's image (wrapped), a cube map's face
+    const auto image = hn::Mul(is_3d<k2D>(tp) ? wrap_index(k, l.depth, tp.wrap_r, bk) : k, hn::Set(di, l.height));
     j0 = hn::Add(image, j0), j1 = hn::Add(image, j1);
   }
   // The four texels' words, then one channel at a time (converted, the border put in, lerped):
@@ -246,50 +248,51 @@ HWY_INLINE bool keeps_nearest_in_level(TextureWrap w) {
 /// One level's filtered texels in byte units (texture.cpp's sample_level): `linear` lanes
 /// blend four texels (two for 1D textures), the others take the nearest; the nearest reads
 /// the border only with clamp to border.
+template <bool k2D = false>
 HWY_INLINE void sample_level(const TexturePlan& tp, int level, VB s, VB t, VB r, MB linear, VB out[4]) {
-  if (tp.depth_texture) r = hn::Min(hn::Max(r, hn::Zero(DB())), hn::Set(DB(), 1.0f));  // texture.cpp's ref
+  if (is_depth<k2D>(tp)) r = hn::Min(hn::Max(r, hn::Zero(DB())), hn::Set(DB(), 1.0f));  // texture.cpp's ref
   const DB db;
   const DIB di;
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
   const VB u = texel_coord(s, l.width, tp.wrap_s);
-  const VB v = tp.one_d ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
-  const VB w = tp.three_d ? texel_coord(r, l.depth, tp.wrap_r) : hn::Zero(db);
+  const VB v = is_1d<k2D>(tp) ? hn::Zero(db) : texel_coord(t, l.height, tp.wrap_t);
+  const VB w = is_3d<k2D>(tp) ? texel_coord(r, l.depth, tp.wrap_r) : hn::Zero(db);
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  hn::Vec<DIB> i, j, k = tp.cube ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
+  hn::Vec<DIB> i, j, k = is_cube<k2D>(tp) ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
   if (!all_linear) {  // nearest: floor, clamped by the clamps (repeat's size wraps to 0)
     i = truncate_in_range(hn::Floor(u));
-    j = tp.one_d ? hn::Zero(di) : truncate_in_range(hn::Floor(v));
+    j = is_1d<k2D>(tp) ? hn::Zero(di) : truncate_in_range(hn::Floor(v));
     if (keeps_nearest_in_level(tp.wrap_s)) i = hn::Min(i, hn::Set(di, l.width - 1));
     if (keeps_nearest_in_level(tp.wrap_t)) j = hn::Min(j, hn::Set(di, l.height - 1));
-    if (tp.three_d) {
+    if (is_3d<k2D>(tp)) {
       k = truncate_in_range(hn::Floor(w));
       if (keeps_nearest_in_level(tp.wrap_r)) k = hn::Min(k, hn::Set(di, l.depth - 1));
     }
   }
-  if (!any_linear) return fetch(tp, l, i, j, k, out, r);
+  if (!any_linear) return fetch<k2D>(tp, l, i, j, k, out, r);
   const VB uu = hn::Sub(u, hn::Set(db, 0.5f)), vv = hn::Sub(v, hn::Set(db, 0.5f));
   const VB fu = hn::Floor(uu), fv = hn::Floor(vv);
   const auto li = hn::RebindMask(di, linear);
   i = all_linear ? truncate_in_range(fu) : hn::IfThenElse(li, truncate_in_range(fu), i);
-  if (tp.one_d) j = hn::Zero(di);  // 1D: one row, whatever the filter
+  if (is_1d<k2D>(tp)) j = hn::Zero(di);  // 1D: one row, whatever the filter
   else j = all_linear ? truncate_in_range(fv) : hn::IfThenElse(li, truncate_in_range(fv), j);
   const VB a = hn::IfThenElseZero(linear, hn::Sub(uu, fu)), b = hn::IfThenElseZero(linear, hn::Sub(vv, fv));
   const auto one = hn::Set(di, 1);
-  if (tp.one_d) {
+  if (is_1d<k2D>(tp)) {
     VB c00[4], c10[4];
-    fetch(tp, l, i, j, k, c00, r);
-    fetch(tp, l, hn::Add(i, one), j, k, c10, r);
+    fetch<k2D>(tp, l, i, j, k, c00, r);
+    fetch<k2D>(tp, l, hn::Add(i, one), j, k, c10, r);
     #pragma GCC unroll 4
     for (int c = 0; c < 4; ++c) out[c] = lerp(c00[c], c10[c], a);
     return;
   }
-  if (!tp.three_d) return bilinear_slice(tp, l, i, j, k, a, b, r, out);
+  if (!is_3d<k2D>(tp)) return bilinear_slice<k2D>(tp, l, i, j, k, a, b, r, out);
   const VB ww = hn::Sub(w, hn::Set(db, 0.5f)), fw = hn::Floor(ww);
   k = all_linear ? truncate_in_range(fw) : hn::IfThenElse(li, truncate_in_range(fw), k);
   const VB cw = hn::IfThenElseZero(linear, hn::Sub(ww, fw));
   VB near[4], far[4];
-  bilinear_slice(tp, l, i, j, k, a, b, r, near);
-  bilinear_slice(tp, l, i, j, hn::Add(k, one), a, b, r, far);
+  bilinear_slice<k2D>(tp, l, i, j, k, a, b, r, near);
+  bilinear_slice<k2D>(tp, l, i, j, hn::Add(k, one), a, b, r, far);
   #pragma GCC unroll 4
   for (int c = 0; c < 4; ++c) out[c] = lerp(near[c], far[c], cw);
 }
@@ -427,6 +430,7 @@ HWY_INLINE hn::Vec<DUB> bytes_to_words(const Bytes8& v) {
 /// One image of a level (a 2D level, a 3D level's image, a cube map's face) filtered by the
 /// 8-bit sampler at taps (i0, i1) across and (j0, j1) down: a function, not a lambda, so that
 /// it is inlined (a lambda called twice is a call, its vectors spilled around it).
+template <bool k2D = false>
 HWY_INLINE Bytes8 bilinear_bytes(const TexturePlan& tp, const TextureLevel& l, hn::Vec<DIB> image, hn::Vec<DIB> i0,
                                  hn::Vec<DIB> i1, hn::Vec<DIB> j0, hn::Vec<DIB> j1, Weight8 across, Weight8 down) {
   const DIB di;
@@ -436,7 +440,7 @@ HWY_INLINE Bytes8 bilinear_bytes(const TexturePlan& tp, const TextureLevel& l, h
   hn::Vec<DUB> t00, t10, t01, t11;
   texel_words(l, hn::Mul(hn::Add(base, j0), width), i0, none, i1, none, t00, t10);
   const Bytes8 top = lerp8(unpack8(t00), unpack8(t10), across);
-  if (tp.one_d) return top;
+  if (is_1d<k2D>(tp)) return top;
   texel_words(l, hn::Mul(hn::Add(base, j1), width), i0, none, i1, none, t01, t11);
   return lerp8(top, lerp8(unpack8(t01), unpack8(t11), across), down);
 }
@@ -453,47 +457,49 @@ HWY_INLINE hn::Vec<DIB> nearest_index(VB c, int size, TextureWrap wrap) {
 /// One level's texels filtered by the 8-bit sampler (texture.cpp's sample_level where
 /// eight_bit_filtering holds): `linear` lanes by fixed_taps and lerp8 along s, t and r, the
 /// others the nearest texel (sample_level's index, wrapped by repeat or clamp to edge).
+template <bool k2D = false>
 HWY_INLINE Bytes8 sample_level_bytes(const TexturePlan& tp, int level, VB s, VB t, VB r, MB linear) {
   const DB db;
   const DIB di;
   const DUB du;
   const TextureLevel& l = tp.texture->levels[std::size_t(level)];
   const bool any_linear = !hn::AllFalse(db, linear), all_linear = hn::AllTrue(db, linear);
-  const auto face = tp.cube ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
+  const auto face = is_cube<k2D>(tp) ? truncate_in_range(r) : hn::Zero(di);  // a cube map's r: the face
   Bytes8 nearest;
   if (!all_linear) {  // sample_level's nearest index, wrapped as fetch wraps it
     const auto i = nearest_index(s, l.width, tp.wrap_s);
-    auto row = tp.one_d ? hn::Zero(di) : nearest_index(t, l.height, tp.wrap_t);
-    if (tp.three_d) row = hn::Add(hn::Mul(nearest_index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
-    else if (tp.cube) row = hn::Add(hn::Mul(face, hn::Set(di, l.height)), row);
+    auto row = is_1d<k2D>(tp) ? hn::Zero(di) : nearest_index(t, l.height, tp.wrap_t);
+    if (is_3d<k2D>(tp)) row = hn::Add(hn::Mul(nearest_index(r, l.depth, tp.wrap_r), hn::Set(di, l.height)), row);
+    else if (is_cube<k2D>(tp)) row = hn::Add(hn::Mul(face, hn::Set(di, l.height)), row);
     const auto* words = reinterpret_cast<const std::uint32_t*>(l.rgba.data());
     nearest = unpack8(gather_words(words, hn::Add(hn::Mul(row, hn::Set(di, l.width)), i)));
     if (!any_linear) return nearest;
   }
   hn::Vec<DIB> i0, i1, wi, j0 = hn::Zero(di), j1 = j0, wj = j0;
   fixed_taps(s, l.width, tp.wrap_s, tp.pot_s, i0, i1, wi);
-  if (!tp.one_d) fixed_taps(t, l.height, tp.wrap_t, tp.pot_t, j0, j1, wj);
+  if (!is_1d<k2D>(tp)) fixed_taps(t, l.height, tp.wrap_t, tp.pot_t, j0, j1, wj);
   const Weight8 across = weight8(wi), down = weight8(wj);
   Bytes8 out;
-  if (tp.three_d) {
+  if (is_3d<k2D>(tp)) {
     hn::Vec<DIB> k0, k1, wk;
     fixed_taps(r, l.depth, tp.wrap_r, tp.pot_r, k0, k1, wk);
-    out = lerp8(bilinear_bytes(tp, l, k0, i0, i1, j0, j1, across, down),
-                bilinear_bytes(tp, l, k1, i0, i1, j0, j1, across, down), weight8(wk));
+    out = lerp8(bilinear_bytes<k2D>(tp, l, k0, i0, i1, j0, j1, across, down),
+                bilinear_bytes<k2D>(tp, l, k1, i0, i1, j0, j1, across, down), weight8(wk));
   } else {
-    out = bilinear_bytes(tp, l, face, i0, i1, j0, j1, across, down);
+    out = bilinear_bytes<k2D>(tp, l, face, i0, i1, j0, j1, across, down);
   }
   return all_linear ? out : select8(hn::RebindMask(du, linear), out, nearest);
 }
 
 /// sample_texture's levels for the 8-bit sampler, blended between two levels in 256ths (the
 /// fraction truncated, texture.cpp's sample_texture_bytes).
+template <bool k2D = false>
 HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const QuadDerivatives* d, MB live) {
   const DB db;
   const DIB di;
   const DUB du;
-  if (!d) return sample_level_bytes(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear));
-  const LevelChoice c = choose_levels(tp, *d);
+  if (!d) return sample_level_bytes<k2D>(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear));
+  const LevelChoice c = choose_levels<k2D>(tp, *d);
   const auto live_i = hn::RebindMask(di, live);
   int first, last;
   level_range(c, live_i, first, last);
@@ -501,7 +507,7 @@ HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const Qu
   for (int level = first; level <= last; ++level) {
     const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
     if (hn::AllFalse(di, hn::And(live_i, hn::Or(is_lo, is_hi)))) continue;
-    const Bytes8 texel = sample_level_bytes(tp, level, s, t, r, c.linear);
+    const Bytes8 texel = sample_level_bytes<k2D>(tp, level, s, t, r, c.linear);
     lo = level == first ? texel : select8(hn::RebindMask(du, is_lo), texel, lo);
     hi = level == first ? texel : select8(hn::RebindMask(du, is_hi), texel, hi);
   }
@@ -511,15 +517,16 @@ HWY_INLINE Bytes8 sample_bytes(const TexturePlan& tp, VB s, VB t, VB r, const Qu
 
 /// The filtered texel of every `live` lane in [0, 1] (sample_texture): the levels each lane
 /// needs sampled one level at a time, then blended.
+template <bool k2D = false>
 HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const QuadDerivatives* d, MB live, VB out[4]) {
   const DB db;
   const DIB di;
   if (tp.eight_bit) {
-    bytes_to_float(sample_bytes(tp, s, t, r, d, live), out);
+    bytes_to_float(sample_bytes<k2D>(tp, s, t, r, d, live), out);
   } else if (!d) {  // one level, one filter for every lane
-    sample_level(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear), out);
+    sample_level<k2D>(tp, tp.base_level, s, t, r, filter_mask(tp.mag_linear), out);
   } else {
-    const LevelChoice c = choose_levels(tp, *d);
+    const LevelChoice c = choose_levels<k2D>(tp, *d);
     const auto live_i = hn::RebindMask(di, live);
     int first, last;
     level_range(c, live_i, first, last);
@@ -528,7 +535,7 @@ HWY_INLINE void sample_texture(const TexturePlan& tp, VB s, VB t, VB r, const Qu
       const auto is_lo = hn::Eq(c.lo, hn::Set(di, level)), is_hi = hn::Eq(c.hi, hn::Set(di, level));
       if (hn::AllFalse(di, hn::And(live_i, hn::Or(is_lo, is_hi)))) continue;
       VB texel[4];
-      sample_level(tp, level, s, t, r, c.linear, texel);
+      sample_level<k2D>(tp, level, s, t, r, c.linear, texel);
       const MB lo_mask = hn::RebindMask(db, is_lo), hi_mask = hn::RebindMask(db, is_hi);
       #pragma GCC unroll 4
       for (int k = 0; k < 4; ++k) {
@@ -552,6 +559,7 @@ struct BlockCoords {
 
 /// The block's coordinates on texture unit `unit` (on a cube map's face), as sample_block
 /// samples them.
+template <bool k2D = false>
 HWY_INLINE BlockCoords block_coords(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
                                     const Weights& w, int x, int y, const VD e[kRows][3]) {
   const DB db;
@@ -564,27 +572,29 @@ HWY_INLINE BlockCoords block_coords(const DrawJob& job, int unit, const TriSetup
     c.d = kRows == 2 && job.fb->height % 2 == 0 ? quad_derivatives_in_block(c.s, c.t, c.r, planes.with_r)
                                                 : quad_derivatives_anywhere(job, t, planes, x, y, e);
   }
-  if (tp.cube) cube_face(c.s, c.t, c.r);
+  if (is_cube<k2D>(tp)) cube_face(c.s, c.t, c.r);
   return c;
 }
 
 /// The filtered texels of texture unit `unit` for the block's fragments, at each lane's
 /// coordinates. `e` are the rows' edge values, `w` their perspective weights; `live` the lanes
 /// whose colour is used.
+template <bool k2D = false>
 HWY_INLINE void sample_block(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
                              const Weights& w, int x, int y, const VD e[kRows][3], MB live, VB texel[4]) {
   const TexturePlan& tp = job.plan.texture[unit];
-  const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  sample_texture(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live, texel);
+  const BlockCoords c = block_coords<k2D>(job, unit, t, planes, w, x, y, e);
+  sample_texture<k2D>(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live, texel);
 }
 
 /// sample_block's texels as RGBA8 words, for a texture the 8-bit sampler filters
 /// (TexturePlan::eight_bit): its bytes, before they are made floats.
+template <bool k2D = false>
 HWY_INLINE hn::Vec<DUB> sample_block_words(const DrawJob& job, int unit, const TriSetup& t, const TexcoordPlanes& planes,
                                            const Weights& w, int x, int y, const VD e[kRows][3], MB live) {
   const TexturePlan& tp = job.plan.texture[unit];
-  const BlockCoords c = block_coords(job, unit, t, planes, w, x, y, e);
-  return bytes_to_words(sample_bytes(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live));
+  const BlockCoords c = block_coords<k2D>(job, unit, t, planes, w, x, y, e);
+  return bytes_to_words(sample_bytes<k2D>(tp, c.s, c.t, c.r, c.lod ? &c.d : nullptr, live));
 }
 
 }  // namespace shadelab::fast::HWY_NAMESPACE

@@ -287,7 +287,7 @@ TEST(FastDifferential, BlockDepthBoundsSkipOnlyHiddenBlocks) {
         d.texcoords.clear();
         d.frag.blend.enabled = random.chance(0.3);
       }
-      textured_kernel += test::planned_kernel(d.frag, d.shade) == fast::BlockKernel::kTextured;
+      textured_kernel += fast::kernel_textured(test::planned_kernel(d.frag, d.shade));
       draws.push_back(std::move(d));
     }
     const int columns = (size.x + PipelineContext::kTileSize - 1) / PipelineContext::kTileSize;
@@ -352,7 +352,7 @@ TEST(FastDifferential, BlockDepthBoundsSkipAHiddenQuad) {
         d.texture->min_filter = TextureFilter::kNearest;  // complete without mipmaps
         d.shade.textures[0].texture = d.texture.get();
         d.shade.texture_kept = true;  // the two draws wait, to be drawn in one pass over the tile
-        ASSERT_EQ(test::planned_kernel(d.frag, d.shade), fast::BlockKernel::kTextured);
+        ASSERT_EQ(test::planned_kernel(d.frag, d.shade), fast::BlockKernel::kTextured2D);
         draws.push_back(std::move(d));
       }
       Framebuffer initial;

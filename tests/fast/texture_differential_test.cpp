@@ -265,7 +265,7 @@ void check_scenes(unsigned first, unsigned last, PipelineContext& context, const
   for (unsigned seed = first; seed < last; ++seed) {
     const TexturedScene scene = textured_scene(seed);
     for (const test::RandomDraw& d : scene.draws) {
-      fogged_kernel += d.shade.fog.enabled && test::planned_kernel(d.frag, d.shade) == fast::BlockKernel::kTextured;
+      fogged_kernel += d.shade.fog.enabled && fast::kernel_textured(test::planned_kernel(d.frag, d.shade));
     }
     const test::Result ref = test::render(scene.initial, scene.draws, nullptr);
     const test::Result fast = test::render(scene.initial, scene.draws, &context);
@@ -417,9 +417,10 @@ Texture grey_2x2() {
   return texture;
 }
 
-// The kernel make_plan chooses for a textured draw: kTextured for one unit whose environment is
-// not GL_COMBINE, with or without the depth test, alpha test, fog and blend (the scenes above
-// draw through it on every target); the general path with a second unit, GL_COMBINE, the
+// The kernel make_plan chooses for a textured draw: a textured kernel for one unit whose
+// environment is not GL_COMBINE, with or without the depth test, alpha test, fog and blend
+// (the scenes above draw through both on every target), kTextured2D for a 2D colour texture
+// and kTextured for the other shapes; the general path with a second unit, GL_COMBINE, the
 // stencil test or a logic op.
 TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
   Texture texture = grey_2x2();
@@ -432,20 +433,30 @@ TEST(TextureDifferential, TheTexturedKernelOnlyForOneUnitWithoutOtherState) {
     return test::planned_kernel(frag, shade);
   };
   using fast::BlockKernel;
-  EXPECT_EQ(kernel([](FragmentState&, ShadeState&) {}), BlockKernel::kTextured);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState&) {}), BlockKernel::kTextured2D);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) {
               f.depth_test = false;
               f.alpha_test = {true, CompareFunc::kGreater, 0.5f};
               f.blend = {true, BlendFactor::kOne, BlendFactor::kOne};
             }),
-            BlockKernel::kTextured);
+            BlockKernel::kTextured2D);
   EXPECT_EQ(kernel([&](FragmentState&, ShadeState& s) { s.textures[2].texture = &texture; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.textures[0].env = TextureEnvMode::kCombine; }),
             BlockKernel::kGeneral);
-  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kTextured);
+  EXPECT_EQ(kernel([](FragmentState&, ShadeState& s) { s.fog.enabled = true; }), BlockKernel::kTextured2D);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.stencil.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.logic_op.enabled = true; }), BlockKernel::kGeneral);
   EXPECT_EQ(kernel([](FragmentState& f, ShadeState&) { f.color_mask[1] = false; }), BlockKernel::kGeneral);
+  // Every other shape: kTextured, whose sampler reads the shape from the plan.
+  for (int shape = 0; shape < 4; ++shape) {
+    Texture other = texture;
+    if (shape == 0) other.dimensions = 1;
+    if (shape == 1) other.dimensions = 3;
+    if (shape == 2) other.cube_map = true;
+    if (shape == 3) other.depth = true;
+    EXPECT_EQ(kernel([&](FragmentState&, ShadeState& s) { s.textures[0].texture = &other; }), BlockKernel::kTextured)
+        << "shape " << shape;
+  }
 }
 
 // The textured kernel writes the filtered bytes as the colours (DrawPlan::texel_bytes) for
