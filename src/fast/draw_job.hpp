@@ -80,9 +80,10 @@ struct VaryingLayout {
 /// (DrawPlan::texture_unit), any filter and environment but GL_COMBINE, any depth test, alpha
 /// test, fog and blend, without stencil, logic op, per-pixel lighting or masks; these it reads
 /// per block. kTextured2D: kTextured's draws whose texture is a 2D colour texture (not 1D, 3D,
-/// a cube map or a depth texture), with a sampler compiled for that shape alone. kStencil: the stencil test with any function and operations, any depth test,
-/// flat or Gouraud colours opaque or blended as kBlend, every colour channel written or none,
-/// fogged or not, without texture, alpha test, logic op, per-pixel lighting or masks.
+/// a cube map or a depth texture), with a sampler compiled for that shape alone. kStencil:
+/// the stencil test with any function and operations, any depth test, flat or Gouraud colours
+/// opaque or blended as kBlend, every colour channel written or none, fogged or not, without
+/// texture, alpha test, logic op, per-pixel lighting or masks.
 enum class BlockKernel : std::uint8_t { kGeneral, kOpaqueLess, kOpaqueLequal, kBlendLess, kBlendLequal, kOpaque, kBlend,
                                         kTextured, kTextured2D, kStencil };
 
@@ -172,9 +173,9 @@ struct DrawPlan {
   bool coverage = false;         ///< smooth lines or points: alpha times their coverage
   BlockKernel kernel = BlockKernel::kGeneral;
   int texture_unit = 0;  ///< the textured kernels' unit
-  /// kTextured writes its unit's filtered bytes as the colour (and alpha-tests their alpha
-  /// byte): GL_REPLACE of an RGBA texture filtered by the 8-bit sampler, without blending
-  /// or fog (byte b is b / 255 in the float chain, which packs it back to b).
+  /// A textured kernel writes its unit's filtered bytes as the colour (and alpha-tests their
+  /// alpha byte): GL_REPLACE of an RGBA texture filtered by the 8-bit sampler, without
+  /// blending or fog (byte b is b / 255 in the float chain, which packs it back to b).
   bool texel_bytes = false;
   LightingSetup lighting;
 };

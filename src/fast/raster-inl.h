@@ -571,7 +571,8 @@ HWY_INLINE void block(const DrawJob& job, const TriSetup& t, TrianglePlanes& pla
       if (unsigned rb = row_bits(bits, r)) scalar_row(job, t, ws, x, y + r, rb, e[r][0], e[r][1], row_of(df, z, r));
     }
   } else if constexpr (kPath == Path::kInterior && kernel_textured(kKernel)) {
-    textured_block<kKernel == BlockKernel::kTextured2D>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
+    constexpr bool k2D = kKernel == BlockKernel::kTextured2D;
+    textured_block<k2D>(job, t, ws.target, planes, counts, x, y, bits, e, b0, b1, f0, f1, z, bound);
   } else if constexpr (kPath == Path::kInterior && kKernel == BlockKernel::kStencil) {
     stencil_block(job, t, ws.target, planes, counts, x, y, bits, b0, b1, f0, f1, z);
   } else if constexpr (kPath == Path::kInterior && kKernel != BlockKernel::kGeneral) {
